@@ -1,0 +1,8 @@
+-- src/ runs on Lua 5.1-5.4 and LuaJIT, so it may use only what all of them share.
+std = "min"
+max_line_length = 120
+exclude_files = {"lua_modules/", ".luarocks/", "tmp/"}
+
+files["spec/"] = {std = "max+busted"} -- specs may feature-test 5.1-only functions
+files["examples/"] = {std = "luajit+love"}
+files["bench/"] = {std = "min"}

@@ -1,0 +1,24 @@
+-- budge: good-enough AABB collision for LÖVE and any Lua 5.1-5.4 / LuaJIT host.
+-- This file only re-exports; each function lives in the module named beside it.
+--
+-- MIT License. Copyright (c) 2026 the budge developers. See LICENSE in the
+-- distribution; the notice travels with this folder when it is copied into a game.
+
+local here = (...):gsub("%.init$", "")
+local box = require(here .. ".box")
+local resolve = require(here .. ".resolve")
+local fatcross = require(here .. ".fatcross")
+
+local budge = {
+  _VERSION = "0.1.0",
+  _DESCRIPTION = "Good-enough AABB collision for LÖVE: detect, resolve, measure",
+  _URL = "https://github.com/budge-lua/budge",
+  _LICENSE = "MIT",
+}
+
+budge.detect_collision = box.detect_collision     -- box.lua
+budge.resolve_collision = resolve.resolve_collision -- resolve.lua
+budge.fat_cross = fatcross.fat_cross              -- fatcross.lua
+budge.resolve_fat_cross = fatcross.resolve_fat_cross
+
+return budge

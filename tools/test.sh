@@ -1,0 +1,86 @@
+#!/bin/sh
+# The whole test run behind `make test`: dependencies, luacheck, the specs on every
+# interpreter, the rockspec. Ends with one line, "N passed, N failed", totalled over all
+# interpreters and checks (each busted test counts once per interpreter; luacheck and
+# each rockspec step count as one check each).
+set -u
+cd "$(dirname "$0")/.." || exit 2
+
+INTERPRETERS="lua5.1 lua5.2 lua5.3 lua5.4 luajit"
+PACKAGES="lua5.1 lua5.2 lua5.3 lua5.4 luajit lua-busted lua-check luarocks"
+
+missing=""
+for tool in $INTERPRETERS busted luacheck luarocks; do
+  command -v "$tool" >/dev/null 2>&1 || missing="$missing $tool"
+done
+if [ -n "$missing" ]; then
+  echo "missing:$missing"
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "installing: apt-get install -y $PACKAGES"
+    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $PACKAGES) \
+      >/tmp/budge-apt.log 2>&1 || { tail -20 /tmp/budge-apt.log; echo "apt-get failed"; exit 2; }
+  else
+    echo "install them first, as root on Debian:"
+    echo "  apt-get update && apt-get install -y $PACKAGES"
+    exit 2
+  fi
+fi
+
+passed=0
+failed=0
+summary=""
+record() { # name, passed, failed
+  passed=$((passed + $2)); failed=$((failed + $3))
+  summary="$summary$(printf '  %-28s %5s passed %5s failed' "$1" "$2" "$3")
+"
+}
+check() { # name, command...: one check that passes when the command exits 0
+  name=$1; shift
+  if "$@" >/tmp/budge-check.log 2>&1; then
+    record "$name" 1 0
+  else
+    cat /tmp/budge-check.log; echo "FAILED: $name"
+    record "$name" 0 1
+  fi
+}
+
+echo "== luacheck"
+if luacheck --no-color -q . ; then record "luacheck" 1 0; else record "luacheck" 0 1; fi
+
+busted_bin=$(command -v busted)
+run_busted() { # label, interpreter and its flags
+  label=$1; shift
+  echo "== busted on $label"
+  out=$("$@" "$busted_bin" -o plainTerminal 2>&1)
+  status=$?
+  printf '%s\n' "$out" | grep -v '^[-+*]*$'
+  line=$(printf '%s\n' "$out" | grep -E '[0-9]+ success(es)? / [0-9]+ failures? / [0-9]+ errors?' | tail -n 1)
+  if [ -z "$line" ]; then
+    record "busted $label" 0 1
+    return
+  fi
+  ok=$(printf '%s' "$line" | sed -E 's/^([0-9]+) success.*/\1/')
+  bad=$(printf '%s' "$line" | sed -E 's/.* ([0-9]+) failures? \/ ([0-9]+) errors?.*/\1 \2/')
+  bad=$(( ${bad% *} + ${bad#* } ))
+  if [ "$status" -ne 0 ] && [ "$bad" -eq 0 ]; then bad=1; fi
+  record "busted $label" "$ok" "$bad"
+}
+for lua in $INTERPRETERS; do run_busted "$lua" "$lua"; done
+
+echo "== rockspec"
+check "luarocks lint" luarocks lint budge-scm-1.rockspec
+tree=$(mktemp -d)
+check "luarocks make --tree" luarocks make --tree "$tree" budge-scm-1.rockspec
+for lua in lua5.1 luajit; do
+  check "require from tree ($lua)" "$lua" -e "
+    package.path = '$tree/share/lua/5.1/?.lua;$tree/share/lua/5.1/?/init.lua'
+    local budge = require('budge')
+    assert(budge.detect_collision({x=0,y=0,width=2,height=2},{x=1,y=1,width=2,height=2}))
+    assert(debug.getinfo(budge.detect_collision, 'S').source:find('$tree', 1, true))"
+done
+rm -rf "$tree"
+
+echo "== summary"
+printf '%s' "$summary"
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
