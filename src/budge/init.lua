@@ -8,6 +8,7 @@ local here = (...):gsub("%.init$", "")
 local box = require(here .. ".box")
 local resolve = require(here .. ".resolve")
 local fatcross = require(here .. ".fatcross")
+local world = require(here .. ".world")
 
 local budge = {
   _VERSION = "0.1.0",
@@ -20,5 +21,6 @@ budge.detect_collision = box.detect_collision     -- box.lua
 budge.resolve_collision = resolve.resolve_collision -- resolve.lua
 budge.fat_cross = fatcross.fat_cross              -- fatcross.lua
 budge.resolve_fat_cross = fatcross.resolve_fat_cross
+budge.new_world = world.new_world                -- world.lua
 
 return budge

@@ -1,0 +1,261 @@
+-- budge.grid: the broad phase. Two structures, both plain arrays:
+--
+-- * a spatial hash over square cells for free boxes. Each cell is an array of records
+--   in insertion order; a box spanning several cells is in each of them, and a query
+--   visits each record once by stamping it. Cells are never freed: a world that keeps
+--   its boxes in the same area stops allocating once every cell it uses exists.
+-- * a tile layer: the caller's 2D grid flattened once into an array of kinds (0 empty,
+--   1 solid, 2 oneway) read by index. No per-tile boxes, no hashing.
+--
+-- Nothing here iterates with pairs(); callers that return results sort them.
+
+local floor = math.floor
+
+local grid = {}
+
+-- Cell keys are numbers: cx + cy * KEY_STRIDE is unique while |cx| < 2^25, i.e. over
+-- 2^25 cells (two billion pixels with 64 px cells) either way from the origin.
+local KEY_STRIDE = 2 ^ 26
+
+local stamp_counter = 0
+
+---A fresh stamp for one query: records visited in that query carry it.
+function grid.next_stamp()
+  stamp_counter = stamp_counter + 1
+  return stamp_counter
+end
+
+local Hash = {}
+Hash.__index = Hash
+
+---@param cell_size number
+function grid.new_hash(cell_size)
+  return setmetatable({cell_size = cell_size, _cells = {}}, Hash)
+end
+
+---Registers `record` (any table; the hash writes its _cx0, _cy0, _cx1, _cy1 fields) in
+---every cell the rectangle touches, edges included.
+function Hash:insert(record, x, y, width, height)
+  local size = self.cell_size
+  local cx0, cy0 = floor(x / size), floor(y / size)
+  local cx1, cy1 = floor((x + width) / size), floor((y + height) / size)
+  record._cx0, record._cy0, record._cx1, record._cy1 = cx0, cy0, cx1, cy1
+  local cells = self._cells
+  for cy = cy0, cy1 do
+    for cx = cx0, cx1 do
+      local key = cx + cy * KEY_STRIDE
+      local cell = cells[key]
+      if cell == nil then
+        cell = {}
+        cells[key] = cell
+      end
+      cell[#cell + 1] = record
+    end
+  end
+end
+
+---Removes `record` from the cells it was inserted in.
+function Hash:remove(record)
+  local cells = self._cells
+  for cy = record._cy0, record._cy1 do
+    for cx = record._cx0, record._cx1 do
+      local cell = cells[cx + cy * KEY_STRIDE]
+      local count = #cell
+      for i = 1, count do
+        if cell[i] == record then
+          -- keep insertion order inside the cell: shift, don't swap
+          for j = i, count - 1 do cell[j] = cell[j + 1] end
+          cell[count] = nil
+          break
+        end
+      end
+    end
+  end
+end
+
+---Appends to `out` (from index n + 1) every record in the cells touched by the
+---rectangle, once each, and returns the new count. Records come cell by cell in row
+---order, and in insertion order inside a cell; callers sort what they return.
+function Hash:collect(x, y, width, height, stamp, out, n)
+  local size = self.cell_size
+  local cx0, cy0 = floor(x / size), floor(y / size)
+  local cx1, cy1 = floor((x + width) / size), floor((y + height) / size)
+  local cells = self._cells
+  for cy = cy0, cy1 do
+    for cx = cx0, cx1 do
+      local cell = cells[cx + cy * KEY_STRIDE]
+      if cell then
+        for i = 1, #cell do
+          local record = cell[i]
+          if record._stamp ~= stamp then
+            record._stamp = stamp
+            n = n + 1
+            out[n] = record
+          end
+        end
+      end
+    end
+  end
+  return n
+end
+
+---Number of cells the rectangle touches; lets a caller avoid walking a huge empty area.
+function Hash:cell_count(x, y, width, height)
+  local size = self.cell_size
+  return (floor((x + width) / size) - floor(x / size) + 1)
+    * (floor((y + height) / size) - floor(y / size) + 1)
+end
+
+grid.EMPTY, grid.SOLID, grid.ONEWAY = 0, 1, 2
+
+---Flattens `rows` (rows[row][col]) into a tile layer. The caller has validated it.
+---`is_solid(id)` and `is_oneway(id)` default to "truthy" and "never".
+function grid.new_tiles(rows, tile_width, tile_height, x, y, is_solid, is_oneway)
+  local layer = {
+    x = x, y = y, tile_width = tile_width, tile_height = tile_height,
+    rows = #rows, cols = rows[1] and #rows[1] or 0,
+    kinds = {}, grid = rows, _is_solid = is_solid, _is_oneway = is_oneway,
+  }
+  grid.read_tiles(layer)
+  return layer
+end
+
+---(Re)reads the layer's source grid into its kinds array.
+function grid.read_tiles(layer)
+  local rows, kinds = layer.grid, layer.kinds
+  local is_solid, is_oneway = layer._is_solid, layer._is_oneway
+  local cols = layer.cols
+  for row = 1, layer.rows do
+    local line = rows[row]
+    local base = (row - 1) * cols
+    for col = 1, cols do
+      local id = line[col]
+      local kind = grid.EMPTY
+      if is_oneway and id ~= nil and is_oneway(id) then
+        kind = grid.ONEWAY
+      elseif is_solid then
+        if id ~= nil and is_solid(id) then kind = grid.SOLID end
+      elseif id then
+        kind = grid.SOLID
+      end
+      kinds[base + col] = kind
+    end
+  end
+end
+
+
+local SOLID, ONEWAY = grid.SOLID, grid.ONEWAY
+
+-- The tile indices (0-based) whose span meets the open interval (from, to), clamped
+-- to [0, count - 1]. Widened by one and then checked against the same edge expression
+-- (origin + i * size) used everywhere, so a rounding in the division never drops a tile.
+local function span(origin, size, count, from, to)
+  local first = floor((from - origin) / size) - 1
+  local last = floor((to - origin) / size) + 1
+  if first < 0 then first = 0 end
+  if last > count - 1 then last = count - 1 end
+  while first <= last and origin + (first + 1) * size <= from do first = first + 1 end
+  while last >= first and origin + last * size >= to do last = last - 1 end
+  return first, last
+end
+grid.span = span
+
+---Nearest tile face met by a box moving `delta` along one axis of the layer (see
+---sweep.axis for the arguments). Returns the face coordinate and how many tiles lie on
+---it (their 1-based col and row written to out_cols, out_rows), or nil, 0. Scans
+---outward from the box and stops at the first face, so a huge move costs at most the
+---layer's width.
+function grid.tile_face(layer, is_x, pos, cross, size, cross_size, delta, blocks_oneway,
+                        out_cols, out_rows)
+  local origin, tile, count, stride
+  local cross_origin, cross_tile, cross_count, cross_stride
+  if is_x then
+    origin, tile, count, stride = layer.x, layer.tile_width, layer.cols, 1
+    cross_origin, cross_tile, cross_count, cross_stride =
+      layer.y, layer.tile_height, layer.rows, layer.cols
+  else
+    origin, tile, count, stride = layer.y, layer.tile_height, layer.rows, layer.cols
+    cross_origin, cross_tile, cross_count, cross_stride =
+      layer.x, layer.tile_width, layer.cols, 1
+  end
+  local first, last = span(cross_origin, cross_tile, cross_count, cross, cross + cross_size)
+  if first > last then return nil, 0 end
+  local kinds = layer.kinds
+  local from, to, far
+  if delta > 0 then
+    local edge = pos + size
+    far = edge + delta
+    from = floor((edge - origin) / tile) - 1
+    to = floor((far - origin) / tile) + 1
+    if from < 0 then from = 0 end
+    if to > count - 1 then to = count - 1 end
+    for j = from, to do
+      local face = origin + j * tile
+      if face >= far then break end
+      if face >= edge then
+        local found = 0
+        for i = first, last do
+          local kind = kinds[i * cross_stride + j * stride + 1]
+          if kind == SOLID or (kind == ONEWAY and blocks_oneway) then
+            found = found + 1
+            if is_x then out_cols[found], out_rows[found] = j + 1, i + 1
+            else out_cols[found], out_rows[found] = i + 1, j + 1 end
+          end
+        end
+        if found > 0 then return face, found end
+      end
+    end
+  else
+    far = pos + delta
+    from = floor((pos - origin) / tile) + 1
+    to = floor((far - origin) / tile) - 1
+    if from > count - 1 then from = count - 1 end
+    if to < 0 then to = 0 end
+    for j = from, to, -1 do
+      local face = origin + (j + 1) * tile
+      if face <= far then break end
+      if face <= pos then
+        local found = 0
+        for i = first, last do
+          local kind = kinds[i * cross_stride + j * stride + 1]
+          if kind == SOLID or (kind == ONEWAY and blocks_oneway) then
+            found = found + 1
+            if is_x then out_cols[found], out_rows[found] = j + 1, i + 1
+            else out_cols[found], out_rows[found] = i + 1, j + 1 end
+          end
+        end
+        if found > 0 then return face, found end
+      end
+    end
+  end
+  return nil, 0
+end
+
+---Appends to the candidate set every non-empty tile that overlaps the rectangle
+---(strictly), as a box with `other` = the layer. `id` orders it against other items.
+function grid.gather_tiles(layer, x, y, width, height, set, id)
+  local tile_width, tile_height = layer.tile_width, layer.tile_height
+  local col0, col1 = span(layer.x, tile_width, layer.cols, x, x + width)
+  if col0 > col1 then return end
+  local row0, row1 = span(layer.y, tile_height, layer.rows, y, y + height)
+  local kinds, cols = layer.kinds, layer.cols
+  local n = set.n
+  local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
+  local set_cols, set_rows, ids = set.col, set.row, set.id
+  for row = row0, row1 do
+    local base = row * cols + 1
+    for col = col0, col1 do
+      local kind = kinds[base + col]
+      if kind ~= 0 then
+        n = n + 1
+        xs[n], ys[n] = layer.x + col * tile_width, layer.y + row * tile_height
+        ws[n], hs[n] = tile_width, tile_height
+        oneway[n] = kind == ONEWAY
+        other[n], set_cols[n], set_rows[n], ids[n] = layer, col + 1, row + 1, id
+      end
+    end
+  end
+  set.n = n
+end
+
+return grid

@@ -1,0 +1,143 @@
+-- budge.sweep: the continuous rungs of the ladder, solved over a candidate set.
+--
+-- A candidate set is a struct of parallel arrays (x, y, w, h, oneway, other, col, row,
+-- id) filled by the broad phase, so that a move allocates nothing. Two solvers:
+--
+-- * axis: the nearest face met by a box moving along one axis ("axis_sweep" runs it for
+--   x, then for y from where x ended: the actors-and-solids model of the Celeste and
+--   TowerFall games, done with exact faces instead of pixel by pixel).
+-- * first_contact: the time of impact of a box moving along a straight diagonal
+--   ("swept": the classic swept AABB of the Minkowski-sum literature), with each
+--   contact classified by the axis it came in on.
+--
+-- Touching is not a collision: a face counts only when the mover's interval overlaps
+-- the candidate's strictly on the other axis, so sliding along a floor made of separate
+-- tiles never catches on a seam.
+
+local HUGE = math.huge
+
+local sweep = {}
+
+sweep.NORMAL_X, sweep.NORMAL_Y, sweep.NORMAL_CORNER = 1, 2, 3
+
+---A new, empty candidate set.
+function sweep.new_set()
+  return {
+    n = 0, x = {}, y = {}, w = {}, h = {}, oneway = {}, other = {}, col = {}, row = {},
+    id = {},
+    touch = {}, normal = {}, touch_n = 0,
+  }
+end
+
+---The largest position p with p + size <= face: where a box of `size` stops with its
+---leading edge on `face`. Equal to face - size whenever that is exact (integers, and
+---halves, quarters... of them); otherwise a few ulps less, never an overlap.
+function sweep.before(face, size)
+  local position = face - size
+  if position + size > face then
+    local step = ((face < 0 and -face or face) + size) * 2 ^ -52
+    repeat position = position - step until position + size <= face
+  end
+  return position
+end
+
+---Nearest face met by the box moving `delta` along one axis (`is_x`: along x). `pos` and
+---`size` are the box on that axis, `cross` and `cross_size` on the other. Returns the
+---face's coordinate, or nil, and lists in set.touch the candidates on that face.
+---Candidates the box already overlaps are passed through (so a box the game teleported
+---into a wall can walk out), and oneway candidates block only `blocks_oneway` moves.
+function sweep.axis(set, is_x, pos, cross, size, cross_size, delta, blocks_oneway)
+  local xs, ys, ws, hs, oneway = set.x, set.y, set.w, set.h, set.oneway
+  local along, across, along_size, across_size
+  if is_x then along, across, along_size, across_size = xs, ys, ws, hs
+  else along, across, along_size, across_size = ys, xs, hs, ws end
+  local cross_end = cross + cross_size
+  local touch = set.touch
+  local touched = 0
+  local best
+  if delta > 0 then
+    local edge = pos + size
+    local reach = edge + delta
+    for i = 1, set.n do
+      local face = along[i]
+      if face >= edge and face < reach and (best == nil or face <= best)
+        and across[i] < cross_end and cross < across[i] + across_size[i]
+        and (blocks_oneway or not oneway[i]) then
+        if face ~= best then best = face; touched = 0 end
+        touched = touched + 1
+        touch[touched] = i
+      end
+    end
+  else
+    local reach = pos + delta
+    for i = 1, set.n do
+      local face = along[i] + along_size[i]
+      if face <= pos and face > reach and (best == nil or face >= best)
+        and across[i] < cross_end and cross < across[i] + across_size[i]
+        and (blocks_oneway or not oneway[i]) then
+        if face ~= best then best = face; touched = 0 end
+        touched = touched + 1
+        touch[touched] = i
+      end
+    end
+  end
+  set.touch_n = touched
+  return best
+end
+
+-- Entry and exit times of [pos, pos + size] moving `delta` against [other, other + size2]
+-- (strict overlap). nil when they never overlap on this axis.
+local function interval_times(pos, size, delta, other, other_size)
+  if delta > 0 then
+    return (other - (pos + size)) / delta, (other + other_size - pos) / delta
+  elseif delta < 0 then
+    return (other + other_size - pos) / delta, (other - (pos + size)) / delta
+  elseif pos < other + other_size and other < pos + size then
+    return -HUGE, HUGE
+  end
+  return nil, nil
+end
+
+---Time of impact in [0, 1) of the box (x, y, w, h) moving (dx, dy) against the set, or
+---nil. Candidates that overlap the box at (start_x, start_y), where the whole move
+---began, are passed through; any other that overlaps at (x, y) already (by rounding
+---between steps of a long move) is met at time 0. Lists the candidates met at that time
+---in set.touch and how each was met in set.normal: NORMAL_X when it came in across x
+---last, NORMAL_Y across y, NORMAL_CORNER when both at the same instant. A oneway
+---candidate is met only from above: moving down, its top at or below the box's bottom
+---at the start, and entered across y.
+function sweep.first_contact(set, start_x, start_y, x, y, w, h, dx, dy)
+  local xs, ys, ws, hs, oneway = set.x, set.y, set.w, set.h, set.oneway
+  local touch, normal = set.touch, set.normal
+  local touched = 0
+  local best = 1
+  for i = 1, set.n do
+    local bx, by, bw, bh = xs[i], ys[i], ws[i], hs[i]
+    if not (start_x < bx + bw and bx < start_x + w and start_y < by + bh and by < start_y + h) then
+      local enter_x, exit_x = interval_times(x, w, dx, bx, bw)
+      if enter_x then
+        local enter_y, exit_y = interval_times(y, h, dy, by, bh)
+        if enter_y then
+          local enter = enter_x > enter_y and enter_x or enter_y
+          local exit = exit_x < exit_y and exit_x or exit_y
+          if enter < exit and exit > 0 and enter <= best then
+            if enter < 0 then enter = 0 end
+            if not oneway[i] or (dy > 0 and by >= start_y + h and enter_y >= enter_x) then
+              if enter < best then best = enter; touched = 0 end
+              if enter < 1 then
+                touched = touched + 1
+                touch[touched] = i
+                normal[touched] = enter_x > enter_y and 1 or (enter_y > enter_x and 2 or 3)
+              end
+            end
+          end
+        end
+      end
+    end
+  end
+  set.touch_n = touched
+  if touched == 0 then return nil end
+  return best
+end
+
+return sweep

@@ -1,0 +1,838 @@
+-- budge.world: solids, actors and tile layers, moved and queried.
+--
+-- Solids never move by themselves and never collide; actors move with world:move and
+-- collide with solids and solid tiles only (not with each other). Solids live in a
+-- spatial hash; tile layers are read by index; actors are hashed lazily, only when a
+-- query needs them, so moving them costs nothing extra.
+--
+-- A move allocates nothing once the world is warm: candidates go into a reused struct
+-- of arrays, contacts into reused records, and nothing iterates with pairs().
+-- A filter callback must not move, add to or query the world it is called from.
+
+local here = (...):match("^(.*)%.[^%.]+$")
+local box = require(here .. ".box")
+local resolve = require(here .. ".resolve")
+local fatcross = require(here .. ".fatcross")
+local sweep = require(here .. ".sweep")
+local grid = require(here .. ".grid")
+
+local check_box, check_wall_type, check_number = box.check_box, box.check_wall_type,
+  box.check_number
+local describe, is_finite, overlaps = box.describe, box.is_finite, box.overlaps
+local before, axis_face, first_contact = sweep.before, sweep.axis, sweep.first_contact
+local tile_face, gather_tiles, next_stamp = grid.tile_face, grid.gather_tiles, grid.next_stamp
+local RULES, oneway_rule, resolve_pair = resolve.RULES, resolve.oneway, fatcross.resolve_pair
+local NORMAL_X, NORMAL_Y = sweep.NORMAL_X, sweep.NORMAL_Y
+local ceil, HUGE = math.ceil, math.huge
+local format, error, type, sort = string.format, error, type, table.sort
+
+local SOLID, ACTOR, TILES = "solid", "actor", "tiles"
+-- A "swept" move that meets a face slides along it; three rounds cover a face, then a
+-- second face that stops the slide, then a corner.
+local MAX_SLIDES = 3
+
+local world = {}
+
+---@class budge.Hit
+---@field other table the solid box, or the tile layer handle
+---@field side "floor"|"ceiling"|"left"|"right" which side of the actor touched
+---@field col? integer the tile's column, for a tile layer
+---@field row? integer the tile's row, for a tile layer
+
+---@class budge.World
+---@field cell_size number
+local World = {}
+World.__index = World
+
+local METHOD_LIST = '"axis_sweep", "swept", "seed", "wall_type", "min_axis" or "fat_cross"'
+
+---Creates an empty world.
+---@param opts? {cell_size?: number} cell_size: side of a spatial hash cell (default 64)
+---@return budge.World
+function world.new_world(opts)
+  if opts ~= nil and type(opts) ~= "table" then
+    error(format("opts must be a table or nil, got %s", describe(opts)), 2)
+  end
+  local cell_size = opts and opts.cell_size
+  if cell_size == nil then
+    cell_size = 64
+  elseif not is_finite(cell_size) or cell_size <= 0 then
+    error(format("opts.cell_size must be a finite number > 0, got %s", describe(cell_size)), 2)
+  end
+  return setmetatable({
+    cell_size = cell_size,
+    _solids = grid.new_hash(cell_size),
+    _actors = grid.new_hash(cell_size),
+    _actor_list = {},
+    _layers = {},
+    _records = {},
+    _next_id = 0,
+    _solid_count = 0,
+    _hits = {}, _n_hits = 0,
+    _set = sweep.new_set(),
+    _found = {},
+    _order = {},
+    _tile_cols = {}, _tile_rows = {},
+    _scratch = {x = 0, y = 0, width = 0, height = 0},
+    _tall = {x = 0, y = 0, width = 0, height = 0, wall_type = "horizontal"},
+    _wide = {x = 0, y = 0, width = 0, height = 0, wall_type = "vertical"},
+    -- bounds of everything solid ever added: long moves only look inside them
+    _min_x = HUGE, _min_y = HUGE, _max_x = -HUGE, _max_y = -HUGE,
+  }, World)
+end
+
+local function grow_bounds(self, x, y, width, height)
+  if x < self._min_x then self._min_x = x end
+  if y < self._min_y then self._min_y = y end
+  if x + width > self._max_x then self._max_x = x + width end
+  if y + height > self._max_y then self._max_y = y + height end
+end
+
+local function new_record(self, item, kind)
+  local id = self._next_id + 1
+  self._next_id = id
+  local record = {item = item, kind = kind, id = id, oneway = false, _stamp = 0}
+  self._records[item] = record
+  return record
+end
+
+local function refuse_duplicate(self, item, name)
+  local record = self._records[item]
+  if record then
+    error(format("%s is already in this world (as %s)", name,
+      record.kind == ACTOR and "an actor" or (record.kind == SOLID and "a solid" or "tiles")), 3)
+  end
+end
+
+local function hash_solid(self, record)
+  local item = record.item
+  record.oneway = item.wall_type == "oneway"
+  self._solids:insert(record, item.x, item.y, item.width, item.height)
+  grow_bounds(self, item.x, item.y, item.width, item.height)
+end
+
+---Adds a solid box: actors stop against it. `wall_type = "oneway"` makes it block
+---only actors coming down onto it from above.
+---@param solid budge.Box
+---@return budge.Box solid
+function World:add_solid(solid)
+  check_box(solid, "box", 2)
+  check_wall_type(solid, "box", 2)
+  refuse_duplicate(self, solid, "box")
+  hash_solid(self, new_record(self, solid, SOLID))
+  self._solid_count = self._solid_count + 1
+  return solid
+end
+
+---Adds an actor box: it moves with world:move and stops against solids. An optional
+---`actor.filter(actor, other)` returning false lets it pass through `other`.
+---@param actor budge.Box
+---@return budge.Box actor
+function World:add_actor(actor)
+  check_box(actor, "box", 2)
+  refuse_duplicate(self, actor, "box")
+  local record = new_record(self, actor, ACTOR)
+  local list = self._actor_list
+  list[#list + 1] = record
+  record.index = #list
+  record.hashed = false
+  return actor
+end
+
+local function check_layer_input(rows, tile_width, tile_height, opts)
+  if type(rows) ~= "table" then
+    error(format("grid must be a table of rows (grid[row][col]), got %s", describe(rows)), 3)
+  end
+  local cols
+  for row = 1, #rows do
+    local line = rows[row]
+    if type(line) ~= "table" then
+      error(format("grid[%d] must be a table (a row of tiles), got %s", row, describe(line)), 3)
+    end
+    if cols == nil then
+      cols = #line
+    elseif #line ~= cols then
+      error(format("grid[%d] has %d tiles but grid[1] has %d: every row must have the same "
+        .. "length", row, #line, cols), 3)
+    end
+  end
+  if not is_finite(tile_width) or tile_width <= 0 then
+    error(format("tile_width must be a finite number > 0, got %s", describe(tile_width)), 3)
+  end
+  if not is_finite(tile_height) or tile_height <= 0 then
+    error(format("tile_height must be a finite number > 0, got %s", describe(tile_height)), 3)
+  end
+  if opts ~= nil and type(opts) ~= "table" then
+    error(format("opts must be a table or nil, got %s", describe(opts)), 3)
+  end
+  opts = opts or {}
+  for _, field in ipairs({"x", "y"}) do
+    if opts[field] ~= nil and not is_finite(opts[field]) then
+      error(format("opts.%s must be a finite number, got %s", field, describe(opts[field])), 3)
+    end
+  end
+  for _, field in ipairs({"is_solid", "is_oneway"}) do
+    if opts[field] ~= nil and type(opts[field]) ~= "function" then
+      error(format("opts.%s must be a function or nil, got %s", field, describe(opts[field])), 3)
+    end
+  end
+  return opts
+end
+
+---Adds a tile layer: `grid[row][col]` is a tile id; a truthy id (or one for which
+---`opts.is_solid(id)` is true) is solid, and one for which `opts.is_oneway(id)` is true
+---is a oneway platform. Tile (col, row) covers x + (col-1)*tile_width onward. The grid
+---is read now; call world:update(handle) after changing it. Note that 0 is truthy in
+---Lua: for Tiled data pass `is_solid = function(id) return id ~= 0 end`.
+---@param rows table grid[row][col]
+---@param tile_width number
+---@param tile_height number
+---@param opts? {x?: number, y?: number, is_solid?: fun(id): boolean, is_oneway?: fun(id): boolean}
+---@return table handle the layer; world:remove accepts it, hits name it as `other`
+function World:add_tiles(rows, tile_width, tile_height, opts)
+  opts = check_layer_input(rows, tile_width, tile_height, opts)
+  local layer = grid.new_tiles(rows, tile_width, tile_height, opts.x or 0, opts.y or 0,
+    opts.is_solid, opts.is_oneway)
+  local record = new_record(self, layer, TILES)
+  local layers = self._layers
+  layers[#layers + 1] = layer
+  record.layer = layer
+  grow_bounds(self, layer.x, layer.y, layer.cols * tile_width, layer.rows * tile_height)
+  return layer
+end
+
+local function find_record(self, item, level)
+  local record = self._records[item]
+  if record == nil then
+    error(format("item is not in this world (add it with add_solid, add_actor or add_tiles "
+      .. "first), got %s", describe(item)), level + 1)
+  end
+  return record
+end
+
+---Removes a solid, an actor or a tile layer (by its handle).
+function World:remove(item)
+  local record = find_record(self, item, 2)
+  local kind = record.kind
+  if kind == SOLID then
+    self._solids:remove(record)
+    self._solid_count = self._solid_count - 1
+  elseif kind == ACTOR then
+    if record.hashed then self._actors:remove(record) end
+    local list = self._actor_list
+    local last = list[#list]
+    list[record.index] = last
+    last.index = record.index
+    list[#list] = nil
+  else
+    local layers = self._layers
+    for i = 1, #layers do
+      if layers[i] == item then table.remove(layers, i) break end
+    end
+  end
+  self._records[item] = nil
+end
+
+---Tells the world that a box's position, size or wall_type changed outside world:move
+---(a teleport), or that a tile layer's grid changed.
+function World:update(item)
+  local record = find_record(self, item, 2)
+  local kind = record.kind
+  if kind == SOLID then
+    check_box(item, "box", 2)
+    check_wall_type(item, "box", 2)
+    self._solids:remove(record)
+    hash_solid(self, record)
+  elseif kind == ACTOR then
+    check_box(item, "box", 2)
+  else
+    check_layer_input(item.grid, item.tile_width, item.tile_height, nil)
+    if #item.grid ~= item.rows or (item.grid[1] and #item.grid[1] or 0) ~= item.cols then
+      error(format("grid changed size from %dx%d to %dx%d: remove the layer and add it again",
+        item.cols, item.rows, item.grid[1] and #item.grid[1] or 0, #item.grid), 2)
+    end
+    grid.read_tiles(item)
+  end
+end
+
+---True when `item` (a box or a tile layer handle) is in this world.
+function World:has(item)
+  return self._records[item] ~= nil
+end
+
+---Counts of the world's items: solids, actors, tile layers.
+---@return integer solids, integer actors, integer layers
+function World:count()
+  return self._solid_count, #self._actor_list, #self._layers
+end
+
+-- Contacts --------------------------------------------------------------------------
+
+local function add_hit(self, other, side, col, row, top, left, id)
+  local n = self._n_hits + 1
+  local hit = self._hits[n]
+  if hit == nil then
+    hit = {}
+    self._hits[n] = hit
+  end
+  hit.other, hit.side, hit.col, hit.row = other, side, col, row
+  hit._top, hit._left, hit._id, hit._round = top, left, id, self._round
+  self._n_hits = n
+end
+
+-- Contacts of one move come out in the order they happened (x before y), and within one
+-- round by position (top, then left) and then by the order items were added.
+local function hit_before(a, b)
+  if a._round ~= b._round then return a._round < b._round end
+  if a._top ~= b._top then return a._top < b._top end
+  if a._left ~= b._left then return a._left < b._left end
+  return a._id < b._id
+end
+
+local function sort_hits(self)
+  local hits, n = self._hits, self._n_hits
+  if n < 2 then return end
+  -- table.sort takes the whole array: park the stale tail, sort, restore it
+  local total = #hits
+  if total == n then
+    sort(hits, hit_before)
+    return
+  end
+  local tail = self._tail or {}
+  self._tail = tail
+  for i = n + 1, total do tail[i - n] = hits[i]; hits[i] = nil end
+  sort(hits, hit_before)
+  for i = n + 1, total do hits[i] = tail[i - n]; tail[i - n] = nil end
+end
+
+-- Candidates -------------------------------------------------------------------------
+
+-- Fills the candidate set with the solid boxes of the spatial hash that touch the
+-- rectangle, skipping those the actor's filter refuses. Clipped to the solids' bounds.
+local function gather_boxes(self, actor, filter, x, y, width, height)
+  local set = self._set
+  set.n = 0
+  local x1, y1 = x + width, y + height
+  if x < self._min_x then x = self._min_x end
+  if y < self._min_y then y = self._min_y end
+  if x1 > self._max_x then x1 = self._max_x end
+  if y1 > self._max_y then y1 = self._max_y end
+  if x1 < x or y1 < y or self._solid_count == 0 then return set end
+  local found = self._found
+  local count = self._solids:collect(x, y, x1 - x, y1 - y, next_stamp(), found, 0)
+  local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
+  local cols, rows, ids = set.col, set.row, set.id
+  local n = 0
+  for i = 1, count do
+    local record = found[i]
+    found[i] = nil
+    local solid = record.item
+    if filter == nil or filter(actor, solid) then
+      n = n + 1
+      xs[n], ys[n], ws[n], hs[n] = solid.x, solid.y, solid.width, solid.height
+      oneway[n], other[n], cols[n], rows[n], ids[n] = record.oneway, solid, nil, nil, record.id
+    end
+  end
+  set.n = n
+  return set
+end
+
+-- Adds the tiles of every layer (that the filter accepts) touching the rectangle.
+local function gather_all_tiles(self, actor, filter, x, y, width, height)
+  local layers = self._layers
+  local set = self._set
+  for k = 1, #layers do
+    local layer = layers[k]
+    if filter == nil or filter(actor, layer) then
+      gather_tiles(layer, x, y, width, height, set, self._records[layer].id)
+    end
+  end
+  return set
+end
+
+-- axis_sweep -------------------------------------------------------------------------
+
+-- (Indexed only by a boolean local: Lua 5.4.4 miscompiles T[a > b] when T is an upvalue.)
+local SIDES_X = {[true] = "right", [false] = "left"}
+local SIDES_Y = {[true] = "floor", [false] = "ceiling"}
+
+-- Moves along one axis up to the nearest face among tiles and boxes; returns the new
+-- position on that axis and records the contacts on that face.
+local function axis_phase(self, actor, filter, is_x, pos, cross, size, cross_size, delta)
+  local blocks_oneway = not is_x and delta > 0
+  local forward = delta > 0
+  local side = is_x and SIDES_X[forward] or SIDES_Y[forward]
+  local first_hit = self._n_hits
+  local best
+  local layers = self._layers
+  local cols, rows = self._tile_cols, self._tile_rows
+  for k = 1, #layers do
+    local layer = layers[k]
+    if filter == nil or filter(actor, layer) then
+      local face, count = tile_face(layer, is_x, pos, cross, size, cross_size, delta,
+        blocks_oneway, cols, rows)
+      if face and (best == nil or (forward and face <= best) or (not forward and face >= best)) then
+        if face ~= best then best = face; self._n_hits = first_hit end
+        local id = self._records[layer].id
+        for c = 1, count do
+          local col, row = cols[c], rows[c]
+          add_hit(self, layer, side, col, row, layer.y + (row - 1) * layer.tile_height,
+            layer.x + (col - 1) * layer.tile_width, id)
+        end
+      end
+    end
+  end
+  if self._solid_count > 0 then
+    local set
+    local reach = delta < 0 and -delta or delta
+    if is_x then
+      set = gather_boxes(self, actor, filter, forward and pos or pos + delta, cross,
+        size + reach, cross_size)
+    else
+      set = gather_boxes(self, actor, filter, cross, forward and pos or pos + delta,
+        cross_size, size + reach)
+    end
+    local face = axis_face(set, is_x, pos, cross, size, cross_size, delta, blocks_oneway)
+    if face and (best == nil or (forward and face <= best) or (not forward and face >= best)) then
+      if face ~= best then best = face; self._n_hits = first_hit end
+      local touch, other, xs, ys, ids = set.touch, set.other, set.x, set.y, set.id
+      for t = 1, set.touch_n do
+        local i = touch[t]
+        add_hit(self, other[i], side, nil, nil, ys[i], xs[i], ids[i])
+      end
+    end
+  end
+  if best == nil then return pos + delta end
+  if forward then return before(best, size) end
+  return best
+end
+
+local function move_axis_sweep(self, actor, dx, dy, filter)
+  local x, y, width, height = actor.x, actor.y, actor.width, actor.height
+  if dx ~= 0 then
+    self._round = 1
+    x = axis_phase(self, actor, filter, true, x, y, width, height, dx)
+  end
+  if dy ~= 0 then
+    self._round = 2
+    y = axis_phase(self, actor, filter, false, y, x, height, width, dy)
+  end
+  actor.x, actor.y = x, y
+end
+
+-- swept ------------------------------------------------------------------------------
+
+-- The part [enter, leave] of the move (as fractions of it) during which the moving box
+-- can meet anything solid: its sweep clipped to the bounds of all solids.
+local function clip_to_bounds(self, x, y, width, height, dx, dy)
+  local enter, leave = 0, 1
+  local lo_x, hi_x = self._min_x - width, self._max_x
+  local lo_y, hi_y = self._min_y - height, self._max_y
+  if dx == 0 then
+    if x < lo_x or x > hi_x then return nil end
+  else
+    local t0, t1 = (lo_x - x) / dx, (hi_x - x) / dx
+    if t0 > t1 then t0, t1 = t1, t0 end
+    if t0 > enter then enter = t0 end
+    if t1 < leave then leave = t1 end
+  end
+  if dy == 0 then
+    if y < lo_y or y > hi_y then return nil end
+  else
+    local t0, t1 = (lo_y - y) / dy, (hi_y - y) / dy
+    if t0 > t1 then t0, t1 = t1, t0 end
+    if t0 > enter then enter = t0 end
+    if t1 < leave then leave = t1 end
+  end
+  if enter > leave then return nil end
+  return enter, leave
+end
+
+-- Travels from (x, y) along (dx, dy) in chunks no longer than a cell, so a huge move
+-- looks at a thin band of the world, until the first contact. Returns the position
+-- reached and, on a contact, whether x and y are blocked and the fraction travelled.
+local function advance(self, actor, filter, x, y, width, height, dx, dy, round)
+  local enter, leave = clip_to_bounds(self, x, y, width, height, dx, dy)
+  if enter == nil then return x + dx, y + dy, nil end
+  local adx, ady = dx < 0 and -dx or dx, dy < 0 and -dy or dy
+  local length = (adx > ady and adx or ady) * (leave - enter)
+  local chunks = ceil(length / self.cell_size)
+  if chunks < 1 then chunks = 1 end
+  local span = leave - enter
+  for k = 1, chunks do
+    local t_from = enter + span * (k - 1) / chunks
+    local t_to = k == chunks and leave or enter + span * k / chunks
+    local from_x, from_y = x + dx * t_from, y + dy * t_from
+    local step_x, step_y = dx * (t_to - t_from), dy * (t_to - t_from)
+    local left = step_x < 0 and from_x + step_x or from_x
+    local top = step_y < 0 and from_y + step_y or from_y
+    local reach_x, reach_y = step_x < 0 and -step_x or step_x, step_y < 0 and -step_y or step_y
+    local set = gather_boxes(self, actor, filter, left, top, width + reach_x, height + reach_y)
+    gather_all_tiles(self, actor, filter, left, top, width + reach_x, height + reach_y)
+    local t = first_contact(set, x, y, from_x, from_y, width, height, step_x, step_y)
+    if t then
+      local touch, normal = set.touch, set.normal
+      local blocked_x, blocked_y = false, false
+      for c = 1, set.touch_n do
+        local kind = normal[c]
+        if kind == NORMAL_X then blocked_x = true elseif kind == NORMAL_Y then blocked_y = true end
+      end
+      -- Only corners met (a box aimed exactly at a corner): the tie rule, vertical wins.
+      -- A corner met beside a real face (the next tile at a seam) blocks nothing.
+      local corners_block = not blocked_x and not blocked_y
+      if corners_block then blocked_y = true end
+      local new_x, new_y = from_x + step_x * t, from_y + step_y * t
+      local xs, ys, ws, hs, other, cols, rows, ids = set.x, set.y, set.w, set.h, set.other,
+        set.col, set.row, set.id
+      for c = 1, set.touch_n do
+        local i, kind = touch[c], normal[c]
+        if kind == NORMAL_X then
+          self._round = round
+          if step_x > 0 then new_x = before(xs[i], width) else new_x = xs[i] + ws[i] end
+          add_hit(self, other[i], step_x > 0 and "right" or "left", cols[i], rows[i], ys[i], xs[i], ids[i])
+        elseif kind == NORMAL_Y or corners_block then
+          self._round = round + 1
+          if step_y > 0 then new_y = before(ys[i], height) else new_y = ys[i] + hs[i] end
+          add_hit(self, other[i], step_y > 0 and "floor" or "ceiling", cols[i], rows[i], ys[i], xs[i], ids[i])
+        end
+      end
+      return new_x, new_y, blocked_x, blocked_y, t_from + (t_to - t_from) * t
+    end
+  end
+  return x + dx, y + dy, nil
+end
+
+local function move_swept(self, actor, dx, dy, filter)
+  local x, y, width, height = actor.x, actor.y, actor.width, actor.height
+  for slide = 1, MAX_SLIDES do
+    if dx == 0 and dy == 0 then break end
+    local blocked_x, blocked_y, travelled
+    x, y, blocked_x, blocked_y, travelled = advance(self, actor, filter, x, y, width, height,
+      dx, dy, slide * 2 - 1)
+    if blocked_x == nil then break end
+    -- slide: what is left of the move, less the blocked component
+    local rest = 1 - travelled
+    dx = blocked_x and 0 or dx * rest
+    dy = blocked_y and 0 or dy * rest
+  end
+  actor.x, actor.y = x, y
+end
+
+-- discrete methods ------------------------------------------------------------------
+
+local order_set -- the set table.sort's comparator reads
+local function candidate_before(i, j)
+  local ys, xs = order_set.y, order_set.x
+  if ys[i] ~= ys[j] then return ys[i] < ys[j] end
+  if xs[i] ~= xs[j] then return xs[i] < xs[j] end
+  return order_set.id[i] < order_set.id[j]
+end
+
+-- Moves the whole way, then pushes the actor out of each solid it overlaps, top row
+-- first and left to right, with one of the core's one-box rules.
+local function move_discrete(self, actor, dx, dy, filter, method)
+  local prev_y = actor.y
+  local x, y, width, height = actor.x + dx, actor.y + dy, actor.width, actor.height
+  actor.x, actor.y = x, y
+  local set = gather_boxes(self, actor, filter, x, y, width, height)
+  gather_all_tiles(self, actor, filter, x, y, width, height)
+  local n = set.n
+  if n == 0 then return end
+  local order = self._order
+  for i = 1, n do order[i] = i end
+  for i = n + 1, #order do order[i] = nil end
+  order_set = set
+  sort(order, candidate_before)
+  order_set = nil
+  local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
+  local cols, rows, ids = set.col, set.row, set.id
+  local scratch, tall, wide = self._scratch, self._tall, self._wide
+  local rule = RULES[method]
+  local speed = dx < 0 and -dx or dx
+  if dy > speed then speed = dy elseif -dy > speed then speed = -dy end
+  self._round = 1
+  for k = 1, n do
+    local i = order[k]
+    local target = other[i]
+    if cols[i] ~= nil then -- a tile: a scratch box stands for it
+      target = scratch
+      scratch.x, scratch.y, scratch.width, scratch.height = xs[i], ys[i], ws[i], hs[i]
+      scratch.wall_type = oneway[i] and "oneway" or nil
+    end
+    if overlaps(actor, target) then
+      local push_x, push_y
+      if oneway[i] then
+        push_x, push_y = oneway_rule(actor, target, prev_y)
+      elseif method == "fat_cross" then
+        -- each solid's cross is sized for this move's speed, capped so both hitboxes
+        -- keep a quarter of the block's smaller side
+        local smaller = ws[i] < hs[i] and ws[i] or hs[i]
+        local inset = speed < smaller * 0.375 and speed or smaller * 0.375
+        tall.x, tall.y, tall.width, tall.height = xs[i] + inset, ys[i], ws[i] - 2 * inset, hs[i]
+        wide.x, wide.y, wide.width, wide.height = xs[i], ys[i] + inset, ws[i], hs[i] - 2 * inset
+        push_x, push_y = resolve_pair(actor, tall, wide)
+      else
+        push_x, push_y = rule(actor, target)
+      end
+      local side
+      if push_y < 0 then side = "floor" elseif push_y > 0 then side = "ceiling"
+      elseif push_x < 0 then side = "right" elseif push_x > 0 then side = "left" end
+      if side then add_hit(self, other[i], side, cols[i], rows[i], ys[i], xs[i], ids[i]) end
+    end
+  end
+end
+
+local MOVES = {
+  axis_sweep = move_axis_sweep,
+  swept = move_swept,
+  seed = move_discrete, wall_type = move_discrete, min_axis = move_discrete,
+  fat_cross = move_discrete,
+}
+
+---Moves `actor` by (dx, dy) against the world's solids and tiles, writes its new
+---position into it and returns it, with the contacts of this move.
+---@param actor budge.Box an actor of this world
+---@param dx number
+---@param dy number
+---@param method? "axis_sweep"|"swept"|"seed"|"wall_type"|"min_axis"|"fat_cross"
+---@return number x, number y, integer n, budge.Hit[] hits owned by the world, valid until the next move
+function World:move(actor, dx, dy, method)
+  local record = self._records[actor]
+  if record == nil or record.kind ~= ACTOR then
+    if record then
+      error(format("actor must be an actor of this world, got %s (use world:update to move "
+        .. "it)", record.kind == SOLID and "a solid" or "a tile layer"), 2)
+    end
+    error(format("actor must be an actor of this world (add it with world:add_actor), got %s",
+      describe(actor)), 2)
+  end
+  check_box(actor, "actor", 2)
+  check_number(dx, "dx", 2)
+  check_number(dy, "dy", 2)
+  local move = MOVES[method or "axis_sweep"]
+  if move == nil then
+    error(format("method must be %s, got %s", METHOD_LIST, describe(method)), 2)
+  end
+  local filter = actor.filter
+  if filter ~= nil and type(filter) ~= "function" then
+    error(format("actor.filter must be a function or nil, got %s", describe(filter)), 2)
+  end
+  self._n_hits = 0
+  move(self, actor, dx, dy, filter, method)
+  sort_hits(self)
+  return actor.x, actor.y, self._n_hits, self._hits
+end
+
+-- Queries ----------------------------------------------------------------------------
+
+-- Brings the actor hash up to date with where the actors are now.
+local function sync_actors(self)
+  local actors, list = self._actors, self._actor_list
+  for i = 1, #list do
+    local record = list[i]
+    local item = record.item
+    local x, y, width, height = item.x, item.y, item.width, item.height
+    if not record.hashed or record.hx ~= x or record.hy ~= y or record.hw ~= width
+      or record.hh ~= height then
+      if record.hashed then actors:remove(record) end
+      actors:insert(record, x, y, width, height)
+      record.hashed = true
+      record.hx, record.hy, record.hw, record.hh = x, y, width, height
+    end
+  end
+end
+
+local function record_before(a, b) return a.id < b.id end
+
+-- Records of boxes (solids and actors) that touch the rectangle, into self._found.
+local function collect_boxes(self, x, y, width, height)
+  sync_actors(self)
+  local found, stamp = self._found, next_stamp()
+  local n = 0
+  local x1, y1 = x + width, y + height
+  local cx, cy = x, y
+  if cx < self._min_x then cx = self._min_x end
+  if cy < self._min_y then cy = self._min_y end
+  local cx1, cy1 = x1 < self._max_x and x1 or self._max_x, y1 < self._max_y and y1 or self._max_y
+  if self._solid_count > 0 and cx <= cx1 and cy <= cy1 then
+    n = self._solids:collect(cx, cy, cx1 - cx, cy1 - cy, stamp, found, n)
+  end
+  -- actors are few and anywhere: clip to their own hash only by the rectangle
+  if #self._actor_list > 0 and self._actors:cell_count(x, y, width, height) <= 4 * #self._actor_list then
+    n = self._actors:collect(x, y, width, height, stamp, found, n)
+  else
+    local list = self._actor_list
+    for i = 1, #list do n = n + 1; found[n] = list[i] end
+  end
+  return n
+end
+
+local function finish(found, n, out)
+  local old = #out
+  for i = 1, n do out[i] = found[i].item; found[i] = nil end
+  for i = n + 1, old do out[i] = nil end
+  return out, n
+end
+
+local function check_out(out, name)
+  if out ~= nil and type(out) ~= "table" then
+    error(format("%s must be a table or nil, got %s", name, describe(out)), 3)
+  end
+  return out or {}
+end
+
+local function layer_touches_rect(layer, x, y, width, height)
+  local col0, col1 = grid.span(layer.x, layer.tile_width, layer.cols, x, x + width)
+  local row0, row1 = grid.span(layer.y, layer.tile_height, layer.rows, y, y + height)
+  local kinds, cols = layer.kinds, layer.cols
+  for row = row0, row1 do
+    for col = col0, col1 do
+      if kinds[row * cols + col + 1] ~= 0 then return true end
+    end
+  end
+  return false
+end
+
+local function query_area(self, x, y, width, height, out)
+  local found = self._found
+  local count = collect_boxes(self, x, y, width, height)
+  local n = 0
+  for i = 1, count do
+    local record = found[i]
+    found[i] = nil
+    local item = record.item
+    if item.x < x + width and x < item.x + item.width and item.y < y + height
+      and y < item.y + item.height then
+      n = n + 1
+      found[n] = record
+    end
+  end
+  local layers = self._layers
+  for k = 1, #layers do
+    if layer_touches_rect(layers[k], x, y, width, height) then
+      n = n + 1
+      found[n] = self._records[layers[k]]
+    end
+  end
+  for i = n + 1, #found do found[i] = nil end
+  sort(found, record_before)
+  return finish(found, n, out)
+end
+
+---Every solid, actor and tile layer (once, when any of its solid tiles does) that
+---strictly contains the point, in the order they were added. Points on an edge are
+---outside, as touching boxes do not collide.
+---@return table out, integer n
+function World:query_point(x, y, out)
+  check_number(x, "x", 2)
+  check_number(y, "y", 2)
+  return query_area(self, x, y, 0, 0, check_out(out, "out"))
+end
+
+---Every solid, actor and tile layer overlapping the rectangle (strictly), in the order
+---they were added.
+---@return table out, integer n
+function World:query_rect(x, y, width, height, out)
+  check_number(x, "x", 2)
+  check_number(y, "y", 2)
+  if not is_finite(width) or width < 0 then
+    error(format("width must be a finite number >= 0, got %s", describe(width)), 2)
+  end
+  if not is_finite(height) or height < 0 then
+    error(format("height must be a finite number >= 0, got %s", describe(height)), 2)
+  end
+  return query_area(self, x, y, width, height, check_out(out, "out"))
+end
+
+-- Fraction of the segment at which it enters the open box, or nil if it never does.
+local function segment_enter(x1, y1, dx, dy, bx, by, bw, bh)
+  local enter, leave = 0, 1
+  if dx == 0 then
+    if not (bx < x1 and x1 < bx + bw) then return nil end
+  else
+    local t0, t1 = (bx - x1) / dx, (bx + bw - x1) / dx
+    if t0 > t1 then t0, t1 = t1, t0 end
+    if t0 > enter then enter = t0 end
+    if t1 < leave then leave = t1 end
+  end
+  if dy == 0 then
+    if not (by < y1 and y1 < by + bh) then return nil end
+  else
+    local t0, t1 = (by - y1) / dy, (by + bh - y1) / dy
+    if t0 > t1 then t0, t1 = t1, t0 end
+    if t0 > enter then enter = t0 end
+    if t1 < leave then leave = t1 end
+  end
+  if enter < leave or (enter == leave and dx == 0 and dy == 0) then return enter end
+  return nil
+end
+
+local function segment_before(a, b)
+  local ta, tb = a._t, b._t
+  if ta ~= tb then return ta < tb end
+  return a.id < b.id
+end
+
+---Every solid, actor and tile layer the segment passes through (strictly inside), sorted
+---by distance along it (then by the order they were added). `out_t[i]` is the fraction
+---of the segment where it enters `out[i]` (0 when it starts inside), so the entry point
+---is x1 + (x2 - x1) * t, y1 + (y2 - y1) * t. For a tile layer, the first solid tile met.
+---@return table out, integer n, number[] out_t
+function World:query_segment(x1, y1, x2, y2, out, out_t)
+  check_number(x1, "x1", 2)
+  check_number(y1, "y1", 2)
+  check_number(x2, "x2", 2)
+  check_number(y2, "y2", 2)
+  out = check_out(out, "out")
+  out_t = check_out(out_t, "out_t")
+  local dx, dy = x2 - x1, y2 - y1
+  local left, top = x1 < x2 and x1 or x2, y1 < y2 and y1 or y2
+  local width, height = dx < 0 and -dx or dx, dy < 0 and -dy or dy
+  local found = self._found
+  local count = collect_boxes(self, left, top, width, height)
+  local n = 0
+  for i = 1, count do
+    local record = found[i]
+    found[i] = nil
+    local item = record.item
+    local t = segment_enter(x1, y1, dx, dy, item.x, item.y, item.width, item.height)
+    if t then
+      n = n + 1
+      found[n] = record
+      record._t = t
+    end
+  end
+  local layers = self._layers
+  for k = 1, #layers do
+    local layer = layers[k]
+    local col0, col1 = grid.span(layer.x, layer.tile_width, layer.cols, left, left + width)
+    local row0, row1 = grid.span(layer.y, layer.tile_height, layer.rows, top, top + height)
+    local kinds, cols = layer.kinds, layer.cols
+    local best
+    for row = row0, row1 do
+      for col = col0, col1 do
+        if kinds[row * cols + col + 1] ~= 0 then
+          local t = segment_enter(x1, y1, dx, dy, layer.x + col * layer.tile_width,
+            layer.y + row * layer.tile_height, layer.tile_width, layer.tile_height)
+          if t and (best == nil or t < best) then best = t end
+        end
+      end
+    end
+    if best then
+      local record = self._records[layer]
+      n = n + 1
+      found[n] = record
+      record._t = best
+    end
+  end
+  for i = n + 1, #found do found[i] = nil end
+  sort(found, segment_before)
+  local old = #out_t
+  for i = 1, n do out_t[i] = found[i]._t end
+  for i = n + 1, old do out_t[i] = nil end
+  local result, total = finish(found, n, out)
+  return result, total, out_t
+end
+
+world.World = World
+return world
