@@ -28,6 +28,9 @@ build = {
     ["budge.box"] = "src/budge/box.lua",
     ["budge.resolve"] = "src/budge/resolve.lua",
     ["budge.fatcross"] = "src/budge/fatcross.lua",
+    ["budge.sweep"] = "src/budge/sweep.lua",
+    ["budge.grid"] = "src/budge/grid.lua",
+    ["budge.world"] = "src/budge/world.lua",
   },
 }
 test = {

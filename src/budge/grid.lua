@@ -161,10 +161,11 @@ end
 grid.span = span
 
 ---Nearest tile face met by a box moving `delta` along one axis of the layer (see
----sweep.axis for the arguments). Returns the face coordinate and how many tiles lie on
----it (their 1-based col and row written to out_cols, out_rows), or nil, 0. Scans
----outward from the box and stops at the first face, so a huge move costs at most the
----layer's width.
+---sweep.axis for the arguments and the rules). Returns the face coordinate and how
+---many tiles lie on it (their 1-based col and row written to out_cols, out_rows), or
+---nil, 0. A face inside the box (the box overlaps a solid tile) counts too, so the
+---caller can refuse to go deeper. Scans outward from the box and stops at the first
+---face, so a huge move costs at most the layer's width.
 function grid.tile_face(layer, is_x, pos, cross, size, cross_size, delta, blocks_oneway,
                         out_cols, out_rows)
   local origin, tile, count, stride
@@ -185,18 +186,19 @@ function grid.tile_face(layer, is_x, pos, cross, size, cross_size, delta, blocks
   if delta > 0 then
     local edge = pos + size
     far = edge + delta
-    from = floor((edge - origin) / tile) - 1
+    from = floor((pos - origin) / tile) - 1
     to = floor((far - origin) / tile) + 1
     if from < 0 then from = 0 end
     if to > count - 1 then to = count - 1 end
     for j = from, to do
       local face = origin + j * tile
       if face >= far then break end
-      if face >= edge then
+      if face > pos then
+        local oneway_ok = blocks_oneway and face >= edge
         local found = 0
         for i = first, last do
           local kind = kinds[i * cross_stride + j * stride + 1]
-          if kind == SOLID or (kind == ONEWAY and blocks_oneway) then
+          if kind == SOLID or (kind == ONEWAY and oneway_ok) then
             found = found + 1
             if is_x then out_cols[found], out_rows[found] = j + 1, i + 1
             else out_cols[found], out_rows[found] = i + 1, j + 1 end
@@ -207,18 +209,20 @@ function grid.tile_face(layer, is_x, pos, cross, size, cross_size, delta, blocks
     end
   else
     far = pos + delta
-    from = floor((pos - origin) / tile) + 1
+    local edge = pos + size
+    from = floor((edge - origin) / tile) + 1
     to = floor((far - origin) / tile) - 1
     if from > count - 1 then from = count - 1 end
     if to < 0 then to = 0 end
     for j = from, to, -1 do
       local face = origin + (j + 1) * tile
       if face <= far then break end
-      if face <= pos then
+      if face < edge then
+        local oneway_ok = blocks_oneway and face <= pos
         local found = 0
         for i = first, last do
           local kind = kinds[i * cross_stride + j * stride + 1]
-          if kind == SOLID or (kind == ONEWAY and blocks_oneway) then
+          if kind == SOLID or (kind == ONEWAY and oneway_ok) then
             found = found + 1
             if is_x then out_cols[found], out_rows[found] = j + 1, i + 1
             else out_cols[found], out_rows[found] = i + 1, j + 1 end

@@ -41,11 +41,15 @@ function sweep.before(face, size)
   return position
 end
 
----Nearest face met by the box moving `delta` along one axis (`is_x`: along x). `pos` and
----`size` are the box on that axis, `cross` and `cross_size` on the other. Returns the
----face's coordinate, or nil, and lists in set.touch the candidates on that face.
----Candidates the box already overlaps are passed through (so a box the game teleported
----into a wall can walk out), and oneway candidates block only `blocks_oneway` moves.
+---How far a box moving `delta` along one axis (`is_x`: along x) gets among the set.
+---`pos` and `size` are the box on that axis, `cross` and `cross_size` on the other.
+---Returns the position where it stops, or nil when nothing stops it, and lists in
+---set.touch the candidates that stop it there.
+---A candidate stops the box when its near face lies ahead within reach, with strict
+---overlap on the other axis. A box the game teleported into a candidate may leave it,
+---but not go deeper: a candidate whose near face is inside the box stops it where it
+---is. That keeps an actor squeezed between two walls in place instead of passing it
+---through one. Oneway candidates stop only `blocks_oneway` moves, and only from outside.
 function sweep.axis(set, is_x, pos, cross, size, cross_size, delta, blocks_oneway)
   local xs, ys, ws, hs, oneway = set.x, set.y, set.w, set.h, set.oneway
   local along, across, along_size, across_size
@@ -55,29 +59,43 @@ function sweep.axis(set, is_x, pos, cross, size, cross_size, delta, blocks_onewa
   local touch = set.touch
   local touched = 0
   local best
+  local edge = pos + size
   if delta > 0 then
-    local edge = pos + size
     local reach = edge + delta
     for i = 1, set.n do
       local face = along[i]
-      if face >= edge and face < reach and (best == nil or face <= best)
-        and across[i] < cross_end and cross < across[i] + across_size[i]
-        and (blocks_oneway or not oneway[i]) then
-        if face ~= best then best = face; touched = 0 end
-        touched = touched + 1
-        touch[touched] = i
+      if face > pos and face < reach
+        and across[i] < cross_end and cross < across[i] + across_size[i] then
+        local stop
+        if face >= edge then
+          if blocks_oneway or not oneway[i] then stop = sweep.before(face, size) end
+        elseif not oneway[i] then
+          stop = pos
+        end
+        if stop and (best == nil or stop <= best) then
+          if stop ~= best then best = stop; touched = 0 end
+          touched = touched + 1
+          touch[touched] = i
+        end
       end
     end
   else
     local reach = pos + delta
     for i = 1, set.n do
       local face = along[i] + along_size[i]
-      if face <= pos and face > reach and (best == nil or face >= best)
-        and across[i] < cross_end and cross < across[i] + across_size[i]
-        and (blocks_oneway or not oneway[i]) then
-        if face ~= best then best = face; touched = 0 end
-        touched = touched + 1
-        touch[touched] = i
+      if face < edge and face > reach
+        and across[i] < cross_end and cross < across[i] + across_size[i] then
+        local stop
+        if face <= pos then
+          if blocks_oneway or not oneway[i] then stop = face end
+        elseif not oneway[i] then
+          stop = pos
+        end
+        if stop and (best == nil or stop >= best) then
+          if stop ~= best then best = stop; touched = 0 end
+          touched = touched + 1
+          touch[touched] = i
+        end
       end
     end
   end
@@ -99,9 +117,11 @@ local function interval_times(pos, size, delta, other, other_size)
 end
 
 ---Time of impact in [0, 1) of the box (x, y, w, h) moving (dx, dy) against the set, or
----nil. Candidates that overlap the box at (start_x, start_y), where the whole move
----began, are passed through; any other that overlaps at (x, y) already (by rounding
----between steps of a long move) is met at time 0. Lists the candidates met at that time
+---nil. A candidate that overlaps the box at (start_x, start_y), where the move began,
+---stops it at time 0 on each axis where the move goes deeper into it (its near face is
+---inside the box), as in sweep.axis, and lets it leave otherwise; any other candidate
+---that overlaps at (x, y) already (by rounding between steps of a long move) is met at
+---time 0. Lists the candidates met at that time
 ---in set.touch and how each was met in set.normal: NORMAL_X when it came in across x
 ---last, NORMAL_Y across y, NORMAL_CORNER when both at the same instant. A oneway
 ---candidate is met only from above: moving down, its top at or below the box's bottom
@@ -113,7 +133,23 @@ function sweep.first_contact(set, start_x, start_y, x, y, w, h, dx, dy)
   local best = 1
   for i = 1, set.n do
     local bx, by, bw, bh = xs[i], ys[i], ws[i], hs[i]
-    if not (start_x < bx + bw and bx < start_x + w and start_y < by + bh and by < start_y + h) then
+    if start_x < bx + bw and bx < start_x + w and start_y < by + bh and by < start_y + h then
+      if not oneway[i] then
+        local deeper_x = (dx > 0 and bx > start_x) or (dx < 0 and bx + bw < start_x + w)
+        local deeper_y = (dy > 0 and by > start_y) or (dy < 0 and by + bh < start_y + h)
+        if deeper_x or deeper_y then
+          if best > 0 then best = 0; touched = 0 end
+          if deeper_x then
+            touched = touched + 1
+            touch[touched], normal[touched] = i, 1
+          end
+          if deeper_y then
+            touched = touched + 1
+            touch[touched], normal[touched] = i, 2
+          end
+        end
+      end
+    else
       local enter_x, exit_x = interval_times(x, w, dx, bx, bw)
       if enter_x then
         local enter_y, exit_y = interval_times(y, h, dy, by, bh)

@@ -19,7 +19,7 @@ local grid = require(here .. ".grid")
 local check_box, check_wall_type, check_number = box.check_box, box.check_wall_type,
   box.check_number
 local describe, is_finite, overlaps = box.describe, box.is_finite, box.overlaps
-local before, axis_face, first_contact = sweep.before, sweep.axis, sweep.first_contact
+local before, axis_stop, first_contact = sweep.before, sweep.axis, sweep.first_contact
 local tile_face, gather_tiles, next_stamp = grid.tile_face, grid.gather_tiles, grid.next_stamp
 local RULES, oneway_rule, resolve_pair = resolve.RULES, resolve.oneway, fatcross.resolve_pair
 local NORMAL_X, NORMAL_Y = sweep.NORMAL_X, sweep.NORMAL_Y
@@ -356,8 +356,8 @@ end
 local SIDES_X = {[true] = "right", [false] = "left"}
 local SIDES_Y = {[true] = "floor", [false] = "ceiling"}
 
--- Moves along one axis up to the nearest face among tiles and boxes; returns the new
--- position on that axis and records the contacts on that face.
+-- Moves along one axis up to the nearest stop among tiles and boxes; returns the new
+-- position on that axis and records the contacts that stop it there.
 local function axis_phase(self, actor, filter, is_x, pos, cross, size, cross_size, delta)
   local blocks_oneway = not is_x and delta > 0
   local forward = delta > 0
@@ -371,8 +371,13 @@ local function axis_phase(self, actor, filter, is_x, pos, cross, size, cross_siz
     if filter == nil or filter(actor, layer) then
       local face, count = tile_face(layer, is_x, pos, cross, size, cross_size, delta,
         blocks_oneway, cols, rows)
-      if face and (best == nil or (forward and face <= best) or (not forward and face >= best)) then
-        if face ~= best then best = face; self._n_hits = first_hit end
+      local stop = face
+      if face then
+        if forward then stop = face >= pos + size and before(face, size) or pos
+        elseif face > pos then stop = pos end
+      end
+      if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
+        if stop ~= best then best = stop; self._n_hits = first_hit end
         local id = self._records[layer].id
         for c = 1, count do
           local col, row = cols[c], rows[c]
@@ -392,9 +397,9 @@ local function axis_phase(self, actor, filter, is_x, pos, cross, size, cross_siz
       set = gather_boxes(self, actor, filter, cross, forward and pos or pos + delta,
         cross_size, size + reach)
     end
-    local face = axis_face(set, is_x, pos, cross, size, cross_size, delta, blocks_oneway)
-    if face and (best == nil or (forward and face <= best) or (not forward and face >= best)) then
-      if face ~= best then best = face; self._n_hits = first_hit end
+    local stop = axis_stop(set, is_x, pos, cross, size, cross_size, delta, blocks_oneway)
+    if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
+      if stop ~= best then best = stop; self._n_hits = first_hit end
       local touch, other, xs, ys, ids = set.touch, set.other, set.x, set.y, set.id
       for t = 1, set.touch_n do
         local i = touch[t]
@@ -403,7 +408,6 @@ local function axis_phase(self, actor, filter, is_x, pos, cross, size, cross_siz
     end
   end
   if best == nil then return pos + delta end
-  if forward then return before(best, size) end
   return best
 end
 
@@ -486,13 +490,18 @@ local function advance(self, actor, filter, x, y, width, height, dx, dy, round)
         set.col, set.row, set.id
       for c = 1, set.touch_n do
         local i, kind = touch[c], normal[c]
+        -- a solid the actor started inside stops it where it is (t is 0): no snapping
+        local outside = not (xs[i] < x + width and x < xs[i] + ws[i] and ys[i] < y + height
+          and y < ys[i] + hs[i])
         if kind == NORMAL_X then
           self._round = round
-          if step_x > 0 then new_x = before(xs[i], width) else new_x = xs[i] + ws[i] end
+          if not outside then new_x = from_x
+          elseif step_x > 0 then new_x = before(xs[i], width) else new_x = xs[i] + ws[i] end
           add_hit(self, other[i], step_x > 0 and "right" or "left", cols[i], rows[i], ys[i], xs[i], ids[i])
         elseif kind == NORMAL_Y or corners_block then
           self._round = round + 1
-          if step_y > 0 then new_y = before(ys[i], height) else new_y = ys[i] + hs[i] end
+          if not outside then new_y = from_y
+          elseif step_y > 0 then new_y = before(ys[i], height) else new_y = ys[i] + hs[i] end
           add_hit(self, other[i], step_y > 0 and "floor" or "ceiling", cols[i], rows[i], ys[i], xs[i], ids[i])
         end
       end
