@@ -181,7 +181,7 @@ describe("world:move", function()
     local wall = world:add_solid(box(200, 0, 16, 100))
     local seen = {}
     local actor = world:add_actor(box(50, 50, 12, 12))
-    actor.filter = function(self, other)
+    actor.filter = function(_, other)
       seen[#seen + 1] = other
       return other ~= glass
     end
@@ -268,7 +268,10 @@ describe("world:move", function()
         local method = (i % 2 == 0) and "swept" or "axis_sweep"
         local x, y, n, hits = world:move(actor, ((i * 7) % 23) - 11.3, ((i * 11) % 19) - 9.1, method)
         trace[#trace + 1] = ("%.17g %.17g %d"):format(x, y, n)
-        for k = 1, n do trace[#trace + 1] = ("%s %.17g %.17g"):format(hits[k].side, hits[k].other.x, hits[k].other.y) end
+        for k = 1, n do
+          local hit = hits[k]
+          trace[#trace + 1] = ("%s %.17g %.17g"):format(hit.side, hit.other.x, hit.other.y)
+        end
       end
       return table.concat(trace, "\n")
     end
@@ -341,7 +344,9 @@ describe("garbage", function()
     local grid = {}
     for row = 1, 40 do
       grid[row] = {}
-      for col = 1, 40 do grid[row][col] = row == 1 or row == 40 or col == 1 or col == 40 or (row * 7 + col * 13) % 11 == 0 end
+      for col = 1, 40 do
+        grid[row][col] = row == 1 or row == 40 or col == 1 or col == 40 or (row * 7 + col * 13) % 11 == 0
+      end
     end
     world:add_tiles(grid, 16, 16)
     for i = 1, 30 do world:add_solid(box((i * 97) % 600, (i * 61) % 600, 16, 16)) end
