@@ -9,7 +9,11 @@
 --
 -- Nothing here iterates with pairs(); callers that return results sort them.
 
-local floor = math.floor
+local here = (...):match("^(.*)%.[^%.]+$")
+local sweep = require(here .. ".sweep")
+
+local floor, ceil = math.floor, math.ceil
+local stop_forward, stop_backward = sweep.stop_forward, sweep.stop_backward
 
 local grid = {}
 
@@ -99,6 +103,57 @@ function Hash:collect(x, y, width, height, stamp, out, n)
   return n
 end
 
+
+---Where a box moving `delta` along one axis stops among the hashed records whose cells
+---the rectangle (x, y, width, height) touches, as sweep.stop_forward/backward decide
+---(`is_x`: along x; pos, cross, size, cross_size: the box). Records whose box the
+---actor's `filter` refuses are skipped. Returns the stop, or nil, and how many records
+---stop it there (written to `touch`).
+function Hash:axis_stop(x, y, width, height, stamp, is_x, pos, cross, size, cross_size,
+                        delta, blocks_oneway, actor, filter, touch)
+  local cell_size = self.cell_size
+  local cx0, cy0 = floor(x / cell_size), floor(y / cell_size)
+  local cx1, cy1 = floor((x + width) / cell_size), floor((y + height) / cell_size)
+  local cells = self._cells
+  local forward = delta > 0
+  local edge = pos + size
+  local reach = forward and edge + delta or pos + delta
+  local cross_end = cross + cross_size
+  local best, touched = nil, 0
+  for cy = cy0, cy1 do
+    for cx = cx0, cx1 do
+      local cell = cells[cx + cy * KEY_STRIDE]
+      if cell then
+        for i = 1, #cell do
+          local record = cell[i]
+          if record._stamp ~= stamp then
+            record._stamp = stamp
+            local item = record.item
+            local low, length, across, across_size
+            if is_x then low, length, across, across_size = item.x, item.width, item.y, item.height
+            else low, length, across, across_size = item.y, item.height, item.x, item.width end
+            if across < cross_end and cross < across + across_size then
+              local stop
+              if forward then
+                stop = stop_forward(low, pos, edge, reach, size, record.oneway, blocks_oneway)
+              else
+                stop = stop_backward(low + length, pos, edge, reach, record.oneway, blocks_oneway)
+              end
+              if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best))
+                and (filter == nil or filter(actor, item)) then
+                if stop ~= best then best = stop; touched = 0 end
+                touched = touched + 1
+                touch[touched] = record
+              end
+            end
+          end
+        end
+      end
+    end
+  end
+  return best, touched
+end
+
 ---Number of cells the rectangle touches; lets a caller avoid walking a huge empty area.
 function Hash:cell_count(x, y, width, height)
   local size = self.cell_size
@@ -113,6 +168,7 @@ grid.EMPTY, grid.SOLID, grid.ONEWAY = 0, 1, 2
 function grid.new_tiles(rows, tile_width, tile_height, x, y, is_solid, is_oneway)
   local layer = {
     x = x, y = y, tile_width = tile_width, tile_height = tile_height,
+    inverse_width = 1 / tile_width, inverse_height = 1 / tile_height,
     rows = #rows, cols = rows[1] and #rows[1] or 0,
     kinds = {}, grid = rows, _is_solid = is_solid, _is_oneway = is_oneway,
   }
@@ -147,18 +203,65 @@ end
 local SOLID, ONEWAY = grid.SOLID, grid.ONEWAY
 
 -- The tile indices (0-based) whose span meets the open interval (from, to), clamped
--- to [0, count - 1]. Widened by one and then checked against the same edge expression
--- (origin + i * size) used everywhere, so a rounding in the division never drops a tile.
-local function span(origin, size, count, from, to)
-  local first = floor((from - origin) / size) - 1
-  local last = floor((to - origin) / size) + 1
+-- to [0, count - 1]. Tile i covers [origin + i * size, origin + (i + 1) * size], the one
+-- expression used for tile edges everywhere; a division that rounds onto a boundary is
+-- caught by checking the result against it.
+local function span(origin, size, inverse, count, from, to)
+  local first = floor((from - origin) * inverse)
+  if origin + first * size > from then first = first - 1 end
+  local last = ceil((to - origin) * inverse) - 1
+  if origin + (last + 1) * size < to then last = last + 1 end
   if first < 0 then first = 0 end
   if last > count - 1 then last = count - 1 end
-  while first <= last and origin + (first + 1) * size <= from do first = first + 1 end
-  while last >= first and origin + last * size >= to do last = last - 1 end
   return first, last
 end
 grid.span = span
+
+-- True when line `j` of tiles holds a tile that stops the box (rows or columns first..last
+-- across it; `oneway_ok`: oneway tiles count).
+local function line_blocks(kinds, base, cross_stride, first, last, oneway_ok)
+  for i = first, last do
+    local kind = kinds[base + i * cross_stride]
+    if kind == SOLID or (kind == ONEWAY and oneway_ok) then return true end
+  end
+  return false
+end
+
+-- The scans start at the tile holding the box's trailing edge (a rounding can only move
+-- that by one tile, onto or past a tile whose face is not a candidate anyway) and stop
+-- at the first face beyond the leading edge's reach, or at the end of the layer. They
+-- find the line of tiles only, in small functions, which LuaJIT compiles well; the
+-- contacts on that line are listed afterwards. Return the line, its face and whether
+-- oneway tiles counted on it.
+local function scan_forward(kinds, stride, cross_stride, first, last, origin, tile, from, to,
+                            pos, edge, far, blocks_oneway)
+  for j = from, to do
+    local near = origin + j * tile
+    if near >= far then return nil end
+    if near > pos then
+      local ok = blocks_oneway and near >= edge
+      if line_blocks(kinds, j * stride + 1, cross_stride, first, last, ok) then
+        return j, near, ok
+      end
+    end
+  end
+  return nil
+end
+
+local function scan_backward(kinds, stride, cross_stride, first, last, origin, tile, from,
+                             pos, edge, far, blocks_oneway)
+  for j = from, 0, -1 do
+    local high = origin + (j + 1) * tile
+    if high <= far then return nil end
+    if high < edge then
+      local ok = blocks_oneway and high <= pos
+      if line_blocks(kinds, j * stride + 1, cross_stride, first, last, ok) then
+        return j, high, ok
+      end
+    end
+  end
+  return nil
+end
 
 ---Nearest tile face met by a box moving `delta` along one axis of the layer (see
 ---sweep.axis for the arguments and the rules). Returns the face coordinate and how
@@ -168,80 +271,54 @@ grid.span = span
 ---face, so a huge move costs at most the layer's width.
 function grid.tile_face(layer, is_x, pos, cross, size, cross_size, delta, blocks_oneway,
                         out_cols, out_rows)
-  local origin, tile, count, stride
-  local cross_origin, cross_tile, cross_count, cross_stride
+  local origin, tile, inverse, count, stride, cross_stride, first, last
   if is_x then
-    origin, tile, count, stride = layer.x, layer.tile_width, layer.cols, 1
-    cross_origin, cross_tile, cross_count, cross_stride =
-      layer.y, layer.tile_height, layer.rows, layer.cols
+    origin, tile, inverse, count, stride, cross_stride =
+      layer.x, layer.tile_width, layer.inverse_width, layer.cols, 1, layer.cols
+    first, last = span(layer.y, layer.tile_height, layer.inverse_height, layer.rows, cross,
+      cross + cross_size)
   else
-    origin, tile, count, stride = layer.y, layer.tile_height, layer.rows, layer.cols
-    cross_origin, cross_tile, cross_count, cross_stride =
-      layer.x, layer.tile_width, layer.cols, 1
+    origin, tile, inverse, count, stride, cross_stride =
+      layer.y, layer.tile_height, layer.inverse_height, layer.rows, layer.cols, 1
+    first, last = span(layer.x, layer.tile_width, layer.inverse_width, layer.cols, cross,
+      cross + cross_size)
   end
-  local first, last = span(cross_origin, cross_tile, cross_count, cross, cross + cross_size)
   if first > last then return nil, 0 end
-  local kinds = layer.kinds
-  local from, to, far
+  local edge = pos + size
+  local line, face, oneway_ok
   if delta > 0 then
-    local edge = pos + size
-    far = edge + delta
-    from = floor((pos - origin) / tile) - 1
-    to = floor((far - origin) / tile) + 1
+    local from = floor((pos - origin) * inverse)
     if from < 0 then from = 0 end
-    if to > count - 1 then to = count - 1 end
-    for j = from, to do
-      local face = origin + j * tile
-      if face >= far then break end
-      if face > pos then
-        local oneway_ok = blocks_oneway and face >= edge
-        local found = 0
-        for i = first, last do
-          local kind = kinds[i * cross_stride + j * stride + 1]
-          if kind == SOLID or (kind == ONEWAY and oneway_ok) then
-            found = found + 1
-            if is_x then out_cols[found], out_rows[found] = j + 1, i + 1
-            else out_cols[found], out_rows[found] = i + 1, j + 1 end
-          end
-        end
-        if found > 0 then return face, found end
-      end
-    end
+    line, face, oneway_ok = scan_forward(layer.kinds, stride, cross_stride, first, last,
+      origin, tile, from, count - 1, pos, edge, edge + delta, blocks_oneway)
   else
-    far = pos + delta
-    local edge = pos + size
-    from = floor((edge - origin) / tile) + 1
-    to = floor((far - origin) / tile) - 1
+    local from = ceil((edge - origin) * inverse) - 1
     if from > count - 1 then from = count - 1 end
-    if to < 0 then to = 0 end
-    for j = from, to, -1 do
-      local face = origin + (j + 1) * tile
-      if face <= far then break end
-      if face < edge then
-        local oneway_ok = blocks_oneway and face <= pos
-        local found = 0
-        for i = first, last do
-          local kind = kinds[i * cross_stride + j * stride + 1]
-          if kind == SOLID or (kind == ONEWAY and oneway_ok) then
-            found = found + 1
-            if is_x then out_cols[found], out_rows[found] = j + 1, i + 1
-            else out_cols[found], out_rows[found] = i + 1, j + 1 end
-          end
-        end
-        if found > 0 then return face, found end
-      end
+    line, face, oneway_ok = scan_backward(layer.kinds, stride, cross_stride, first, last,
+      origin, tile, from, pos, edge, pos + delta, blocks_oneway)
+  end
+  if line == nil then return nil, 0 end
+  local kinds = layer.kinds
+  local found = 0
+  local base = line * stride + 1
+  for i = first, last do
+    local kind = kinds[base + i * cross_stride]
+    if kind == SOLID or (kind == ONEWAY and oneway_ok) then
+      found = found + 1
+      if is_x then out_cols[found], out_rows[found] = line + 1, i + 1
+      else out_cols[found], out_rows[found] = i + 1, line + 1 end
     end
   end
-  return nil, 0
+  return face, found
 end
 
 ---Appends to the candidate set every non-empty tile that overlaps the rectangle
 ---(strictly), as a box with `other` = the layer. `id` orders it against other items.
 function grid.gather_tiles(layer, x, y, width, height, set, id)
   local tile_width, tile_height = layer.tile_width, layer.tile_height
-  local col0, col1 = span(layer.x, tile_width, layer.cols, x, x + width)
+  local col0, col1 = span(layer.x, tile_width, layer.inverse_width, layer.cols, x, x + width)
   if col0 > col1 then return end
-  local row0, row1 = span(layer.y, tile_height, layer.rows, y, y + height)
+  local row0, row1 = span(layer.y, tile_height, layer.inverse_height, layer.rows, y, y + height)
   local kinds, cols = layer.kinds, layer.cols
   local n = set.n
   local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other

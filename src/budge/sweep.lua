@@ -3,9 +3,10 @@
 -- A candidate set is a struct of parallel arrays (x, y, w, h, oneway, other, col, row,
 -- id) filled by the broad phase, so that a move allocates nothing. Two solvers:
 --
--- * axis: the nearest face met by a box moving along one axis ("axis_sweep" runs it for
---   x, then for y from where x ended: the actors-and-solids model of the Celeste and
---   TowerFall games, done with exact faces instead of pixel by pixel).
+-- * stop_forward / stop_backward: where a box moving along one axis stops against one
+--   candidate ("axis_sweep" applies them for x, then for y from where x ended: the
+--   actors-and-solids model of the Celeste and TowerFall games, done with exact faces
+--   instead of pixel by pixel; grid.lua runs them over tiles and hashed boxes).
 -- * first_contact: the time of impact of a box moving along a straight diagonal
 --   ("swept": the classic swept AABB of the Minkowski-sum literature), with each
 --   contact classified by the axis it came in on.
@@ -41,66 +42,39 @@ function sweep.before(face, size)
   return position
 end
 
----How far a box moving `delta` along one axis (`is_x`: along x) gets among the set.
----`pos` and `size` are the box on that axis, `cross` and `cross_size` on the other.
----Returns the position where it stops, or nil when nothing stops it, and lists in
----set.touch the candidates that stop it there.
----A candidate stops the box when its near face lies ahead within reach, with strict
----overlap on the other axis. A box the game teleported into a candidate may leave it,
----but not go deeper: a candidate whose near face is inside the box stops it where it
----is. That keeps an actor squeezed between two walls in place instead of passing it
----through one. Oneway candidates stop only `blocks_oneway` moves, and only from outside.
-function sweep.axis(set, is_x, pos, cross, size, cross_size, delta, blocks_oneway)
-  local xs, ys, ws, hs, oneway = set.x, set.y, set.w, set.h, set.oneway
-  local along, across, along_size, across_size
-  if is_x then along, across, along_size, across_size = xs, ys, ws, hs
-  else along, across, along_size, across_size = ys, xs, hs, ws end
-  local cross_end = cross + cross_size
-  local touch = set.touch
-  local touched = 0
-  local best
-  local edge = pos + size
-  if delta > 0 then
-    local reach = edge + delta
-    for i = 1, set.n do
-      local face = along[i]
-      if face > pos and face < reach
-        and across[i] < cross_end and cross < across[i] + across_size[i] then
-        local stop
-        if face >= edge then
-          if blocks_oneway or not oneway[i] then stop = sweep.before(face, size) end
-        elseif not oneway[i] then
-          stop = pos
-        end
-        if stop and (best == nil or stop <= best) then
-          if stop ~= best then best = stop; touched = 0 end
-          touched = touched + 1
-          touch[touched] = i
-        end
-      end
-    end
-  else
-    local reach = pos + delta
-    for i = 1, set.n do
-      local face = along[i] + along_size[i]
-      if face < edge and face > reach
-        and across[i] < cross_end and cross < across[i] + across_size[i] then
-        local stop
-        if face <= pos then
-          if blocks_oneway or not oneway[i] then stop = face end
-        elseif not oneway[i] then
-          stop = pos
-        end
-        if stop and (best == nil or stop >= best) then
-          if stop ~= best then best = stop; touched = 0 end
-          touched = touched + 1
-          touch[touched] = i
-        end
-      end
-    end
+-- The axis rules: where a box moving along one axis stops against one candidate.
+-- `pos` and `edge` are the box's low and high coordinates on that axis, `reach` the
+-- leading edge's coordinate after the full move. The caller has checked that the
+-- candidate overlaps the box strictly on the other axis.
+--
+-- A candidate stops the box when its near face lies ahead within reach. A box the game
+-- teleported into a candidate may leave it but not go deeper: a candidate whose near
+-- face is inside the box stops it where it is, which keeps an actor squeezed between two
+-- walls in place instead of passing it through one. Oneway candidates stop only moves
+-- that `blocks_oneway` (down), and only from outside.
+
+---Moving toward +x or +y against a candidate whose low face is at `near`: the position
+---where the box stops, or nil.
+function sweep.stop_forward(near, pos, edge, reach, size, oneway, blocks_oneway)
+  if near <= pos or near >= reach then return nil end
+  if near >= edge then
+    if blocks_oneway or not oneway then return sweep.before(near, size) end
+    return nil
   end
-  set.touch_n = touched
-  return best
+  if not oneway then return pos end
+  return nil
+end
+
+---Moving toward -x or -y against a candidate whose high face is at `far`: the position
+---where the box stops, or nil.
+function sweep.stop_backward(far, pos, edge, reach, oneway, blocks_oneway)
+  if far >= edge or far <= reach then return nil end
+  if far <= pos then
+    if blocks_oneway or not oneway then return far end
+    return nil
+  end
+  if not oneway then return pos end
+  return nil
 end
 
 -- Entry and exit times of [pos, pos + size] moving `delta` against [other, other + size2]

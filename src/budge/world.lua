@@ -19,7 +19,7 @@ local grid = require(here .. ".grid")
 local check_box, check_wall_type, check_number = box.check_box, box.check_wall_type,
   box.check_number
 local describe, is_finite, overlaps = box.describe, box.is_finite, box.overlaps
-local before, axis_stop, first_contact = sweep.before, sweep.axis, sweep.first_contact
+local before, first_contact = sweep.before, sweep.first_contact
 local tile_face, gather_tiles, next_stamp = grid.tile_face, grid.gather_tiles, grid.next_stamp
 local RULES, oneway_rule, resolve_pair = resolve.RULES, resolve.oneway, fatcross.resolve_pair
 local NORMAL_X, NORMAL_Y = sweep.NORMAL_X, sweep.NORMAL_Y
@@ -289,20 +289,19 @@ local function hit_before(a, b)
   return a._id < b._id
 end
 
+-- Insertion sort: a move has a handful of contacts, and unlike table.sort this stays
+-- inside LuaJIT's compiled code.
 local function sort_hits(self)
-  local hits, n = self._hits, self._n_hits
-  if n < 2 then return end
-  -- table.sort takes the whole array: park the stale tail, sort, restore it
-  local total = #hits
-  if total == n then
-    sort(hits, hit_before)
-    return
+  local hits = self._hits
+  for i = 2, self._n_hits do
+    local hit = hits[i]
+    local j = i - 1
+    while j >= 1 and hit_before(hit, hits[j]) do
+      hits[j + 1] = hits[j]
+      j = j - 1
+    end
+    hits[j + 1] = hit
   end
-  local tail = self._tail or {}
-  self._tail = tail
-  for i = n + 1, total do tail[i - n] = hits[i]; hits[i] = nil end
-  sort(hits, hit_before)
-  for i = n + 1, total do hits[i] = tail[i - n]; tail[i - n] = nil end
 end
 
 -- Candidates -------------------------------------------------------------------------
@@ -375,7 +374,7 @@ local function axis_phase(self, actor, filter, is_x, pos, cross, size, cross_siz
       if face then
         if forward then stop = face >= pos + size and before(face, size) or pos
         elseif face > pos then stop = pos end
-      end
+      end -- the same outcomes as sweep.stop_forward / stop_backward give
       if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
         if stop ~= best then best = stop; self._n_hits = first_hit end
         local id = self._records[layer].id
@@ -388,22 +387,30 @@ local function axis_phase(self, actor, filter, is_x, pos, cross, size, cross_siz
     end
   end
   if self._solid_count > 0 then
-    local set
+    -- the swept rectangle, clipped to the bounds of everything solid
     local reach = delta < 0 and -delta or delta
+    local x, y, width, height
     if is_x then
-      set = gather_boxes(self, actor, filter, forward and pos or pos + delta, cross,
-        size + reach, cross_size)
+      x, y, width, height = forward and pos or pos + delta, cross, size + reach, cross_size
     else
-      set = gather_boxes(self, actor, filter, cross, forward and pos or pos + delta,
-        cross_size, size + reach)
+      x, y, width, height = cross, forward and pos or pos + delta, cross_size, size + reach
     end
-    local stop = axis_stop(set, is_x, pos, cross, size, cross_size, delta, blocks_oneway)
-    if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
-      if stop ~= best then best = stop; self._n_hits = first_hit end
-      local touch, other, xs, ys, ids = set.touch, set.other, set.x, set.y, set.id
-      for t = 1, set.touch_n do
-        local i = touch[t]
-        add_hit(self, other[i], side, nil, nil, ys[i], xs[i], ids[i])
+    local x1, y1 = x + width, y + height
+    if x < self._min_x then x = self._min_x end
+    if y < self._min_y then y = self._min_y end
+    if x1 > self._max_x then x1 = self._max_x end
+    if y1 > self._max_y then y1 = self._max_y end
+    if x <= x1 and y <= y1 then
+      local touch = self._found
+      local stop, count = self._solids:axis_stop(x, y, x1 - x, y1 - y, next_stamp(), is_x, pos,
+        cross, size, cross_size, delta, blocks_oneway, actor, filter, touch)
+      if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
+        if stop ~= best then best = stop; self._n_hits = first_hit end
+        for t = 1, count do
+          local record = touch[t]
+          local item = record.item
+          add_hit(self, item, side, nil, nil, item.y, item.x, record.id)
+        end
       end
     end
   end
@@ -691,8 +698,8 @@ local function check_out(out, name)
 end
 
 local function layer_touches_rect(layer, x, y, width, height)
-  local col0, col1 = grid.span(layer.x, layer.tile_width, layer.cols, x, x + width)
-  local row0, row1 = grid.span(layer.y, layer.tile_height, layer.rows, y, y + height)
+  local col0, col1 = grid.span(layer.x, layer.tile_width, layer.inverse_width, layer.cols, x, x + width)
+  local row0, row1 = grid.span(layer.y, layer.tile_height, layer.inverse_height, layer.rows, y, y + height)
   local kinds, cols = layer.kinds, layer.cols
   for row = row0, row1 do
     for col = col0, col1 do
@@ -814,8 +821,8 @@ function World:query_segment(x1, y1, x2, y2, out, out_t)
   local layers = self._layers
   for k = 1, #layers do
     local layer = layers[k]
-    local col0, col1 = grid.span(layer.x, layer.tile_width, layer.cols, left, left + width)
-    local row0, row1 = grid.span(layer.y, layer.tile_height, layer.rows, top, top + height)
+    local col0, col1 = grid.span(layer.x, layer.tile_width, layer.inverse_width, layer.cols, left, left + width)
+    local row0, row1 = grid.span(layer.y, layer.tile_height, layer.inverse_height, layer.rows, top, top + height)
     local kinds, cols = layer.kinds, layer.cols
     local best
     for row = row0, row1 do
