@@ -194,7 +194,8 @@ if options.profile ~= "" then -- one way alone, for luajit -jp
   return
 end
 
-print(("budge %s world bench on %s, %s"):format(budge._VERSION, common.interpreter(), common.machine()))
+print(("budge %s world bench on %s, %s"):format(budge._VERSION, common.interpreter(),
+  common.machine()))
 print(("map %dx%d tiles of %d px, 20%% solid; actors %dx%d moving 1..8 px per frame; %d frames; "
   .. "median of %d runs"):format(MAP, MAP, TILE, SIZE, SIZE, options.frames, options.runs))
 if not has_bump then print("bump.lua: not installed, skipped (a user's own `require(\"bump\")` enables it)") end

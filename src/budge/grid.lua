@@ -17,9 +17,12 @@ local stop_forward, stop_backward = sweep.stop_forward, sweep.stop_backward
 
 local grid = {}
 
--- Cell keys are numbers: cx + cy * KEY_STRIDE is unique while |cx| < 2^25, i.e. over
--- 2^25 cells (two billion pixels with 64 px cells) either way from the origin.
+-- Cell keys are numbers: cx + cy * KEY_STRIDE + KEY_OFFSET is unique while |cx| and
+-- |cy| < 2^25 (two billion pixels with 64 px cells either way from the origin). The
+-- offset keeps every key far above the table's array part, so LuaJIT never has to
+-- compile a lookup into a table that is part array, part hash.
 local KEY_STRIDE = 2 ^ 26
+local KEY_OFFSET = 2 ^ 25 * (KEY_STRIDE + 1)
 
 local stamp_counter = 0
 
@@ -47,7 +50,7 @@ function Hash:insert(record, x, y, width, height)
   local cells = self._cells
   for cy = cy0, cy1 do
     for cx = cx0, cx1 do
-      local key = cx + cy * KEY_STRIDE
+      local key = cx + cy * KEY_STRIDE + KEY_OFFSET
       local cell = cells[key]
       if cell == nil then
         cell = {}
@@ -63,7 +66,7 @@ function Hash:remove(record)
   local cells = self._cells
   for cy = record._cy0, record._cy1 do
     for cx = record._cx0, record._cx1 do
-      local cell = cells[cx + cy * KEY_STRIDE]
+      local cell = cells[cx + cy * KEY_STRIDE + KEY_OFFSET]
       local count = #cell
       for i = 1, count do
         if cell[i] == record then
@@ -87,7 +90,7 @@ function Hash:collect(x, y, width, height, stamp, out, n)
   local cells = self._cells
   for cy = cy0, cy1 do
     for cx = cx0, cx1 do
-      local cell = cells[cx + cy * KEY_STRIDE]
+      local cell = cells[cx + cy * KEY_STRIDE + KEY_OFFSET]
       if cell then
         for i = 1, #cell do
           local record = cell[i]
@@ -104,8 +107,9 @@ function Hash:collect(x, y, width, height, stamp, out, n)
 end
 
 
----Where a box moving `delta` along one axis stops among the hashed records whose cells
----the rectangle (x, y, width, height) touches, as sweep.stop_forward/backward decide
+---Where a box moving `delta` along one axis stops among the hashed records (each with
+---its box's x, y, width, height copied in, and `item` the box) whose cells the
+---rectangle (x, y, width, height) touches, as sweep.stop_forward/backward decide
 ---(`is_x`: along x; pos, cross, size, cross_size: the box). Records whose box the
 ---actor's `filter` refuses are skipped. Returns the stop, or nil, and how many records
 ---stop it there (written to `touch`).
@@ -122,16 +126,18 @@ function Hash:axis_stop(x, y, width, height, stamp, is_x, pos, cross, size, cros
   local best, touched = nil, 0
   for cy = cy0, cy1 do
     for cx = cx0, cx1 do
-      local cell = cells[cx + cy * KEY_STRIDE]
+      local cell = cells[cx + cy * KEY_STRIDE + KEY_OFFSET]
       if cell then
         for i = 1, #cell do
           local record = cell[i]
           if record._stamp ~= stamp then
             record._stamp = stamp
-            local item = record.item
             local low, length, across, across_size
-            if is_x then low, length, across, across_size = item.x, item.width, item.y, item.height
-            else low, length, across, across_size = item.y, item.height, item.x, item.width end
+            if is_x then
+              low, length, across, across_size = record.x, record.width, record.y, record.height
+            else
+              low, length, across, across_size = record.y, record.height, record.x, record.width
+            end
             if across < cross_end and cross < across + across_size then
               local stop
               if forward then
@@ -140,7 +146,7 @@ function Hash:axis_stop(x, y, width, height, stamp, is_x, pos, cross, size, cros
                 stop = stop_backward(low + length, pos, edge, reach, record.oneway, blocks_oneway)
               end
               if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best))
-                and (filter == nil or filter(actor, item)) then
+                and (filter == nil or filter(actor, record.item)) then
                 if stop ~= best then best = stop; touched = 0 end
                 touched = touched + 1
                 touch[touched] = record

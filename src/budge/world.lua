@@ -104,9 +104,12 @@ local function refuse_duplicate(self, item, name)
   end
 end
 
+-- A solid's record keeps a copy of its box, read in the hot loops (solids move only
+-- through world:update, which refreshes it).
 local function hash_solid(self, record)
   local item = record.item
   record.oneway = item.wall_type == "oneway"
+  record.x, record.y, record.width, record.height = item.x, item.y, item.width, item.height
   self._solids:insert(record, item.x, item.y, item.width, item.height)
   grow_bounds(self, item.x, item.y, item.width, item.height)
 end
