@@ -1,5 +1,5 @@
 # budge: `make test` checks everything CI checks; `make bench` measures.
-.PHONY: test lint spec
+.PHONY: test lint spec bench-world
 
 test:
 	@sh tools/test.sh
@@ -9,3 +9,8 @@ lint:
 
 spec:
 	busted
+
+# World bench: LuaJIT at full size, Lua 5.4 with fewer frames (it is ~10x slower).
+bench-world:
+	luajit bench/world.lua --runs 3
+	lua5.4 bench/world.lua --runs 3 --frames 60

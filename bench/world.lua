@@ -201,7 +201,8 @@ print(("map %dx%d tiles of %d px, 20%% solid; actors %dx%d moving 1..8 px per fr
 if not has_bump then print("bump.lua: not installed, skipped (a user's own `require(\"bump\")` enables it)") end
 print(("%8s %12s %12s %12s %8s %8s %10s %10s %s"):format("actors", "a tiles ns", "b boxes ns",
   "c ref ns", "a/c", "b/c", "a KB/fr", "b KB/fr", has_bump and "bump/c" or ""))
-local csv = {"interpreter,actors,frames,runs,tiles_ns,boxes_ns,reference_ns,tiles_kb_per_frame,boxes_kb_per_frame,bump_ns"}
+local csv = {"interpreter,actors,frames,runs,tiles_ns,boxes_ns,reference_ns,"
+  .. "tiles_kb_per_frame,boxes_kb_per_frame,bump_ns"}
 for count in tostring(options.actors):gmatch("%d+") do
   count = tonumber(count)
   local starts = make_actors(grid, common.new_random(options.seed + count), count)
