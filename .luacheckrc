@@ -3,6 +3,6 @@ std = "min"
 max_line_length = 120
 exclude_files = {"lua_modules/", ".luarocks/", "tmp/"}
 
-files["spec/"] = {std = "max+busted"} -- specs may feature-test 5.1-only functions
+files["spec/"] = {std = "+busted"}
 files["examples/"] = {std = "luajit+love"}
 files["bench/"] = {std = "min"}

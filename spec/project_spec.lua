@@ -2,33 +2,22 @@
 local budge = require("budge")
 local lfs = require("lfs")
 
-local function read(path)
-  local file = assert(io.open(path, "rb"))
-  local text = file:read("*a")
-  file:close()
-  return text
-end
+local files = require("spec.support.files")
+local read = files.read
 
 local function load_rockspec()
   local env = {}
-  local chunk
-  if setfenv then
-    chunk = assert(loadstring(read("budge-scm-1.rockspec")))
-    setfenv(chunk, env)
-  else
-    chunk = assert(load(read("budge-scm-1.rockspec"), "rockspec", "t", env))
-  end
-  chunk()
+  files.load(read("budge-scm-1.rockspec"), "rockspec", env)()
   return env
 end
 
 local function module_files()
-  local files = {}
+  local paths = {}
   for name in lfs.dir("src/budge") do
-    if name:match("%.lua$") then files[#files + 1] = "src/budge/" .. name end
+    if name:match("%.lua$") then paths[#paths + 1] = "src/budge/" .. name end
   end
-  table.sort(files)
-  return files
+  table.sort(paths)
+  return paths
 end
 
 describe("the project", function()

@@ -1,14 +1,9 @@
 -- The README's one-minute example must print what the README says it prints.
-local function read(path)
-  local file = assert(io.open(path, "rb"))
-  local text = file:read("*a")
-  file:close()
-  return text
-end
+local files = require("spec.support.files")
 
 describe("the README's one-minute example", function()
   it("prints exactly the values written beside each print", function()
-    local readme = read("README.md")
+    local readme = files.read("README.md")
     local code = readme:match("## One%-minute example%s+```lua\n(.-)```")
     assert.is_string(code)
     local expected = {}
@@ -24,14 +19,7 @@ describe("the README's one-minute example", function()
         printed[#printed + 1] = table.concat(parts, " ")
       end,
     }, {__index = _G})
-    local chunk
-    if setfenv then
-      chunk = assert(loadstring(code))
-      setfenv(chunk, env)
-    else
-      chunk = assert(load(code, "README", "t", env))
-    end
-    chunk()
+    files.load(code, "README", env)()
     assert.is_true(#expected >= 4)
     assert.same(expected, printed)
   end)
