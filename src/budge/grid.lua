@@ -61,6 +61,17 @@ function Hash:insert(record, x, y, width, height)
   end
 end
 
+---Re-registers `record` if the rectangle now touches other cells than it did; cheap
+---when it does not (an actor crosses a cell edge once every few moves).
+function Hash:moved(record, x, y, width, height)
+  local size = self.cell_size
+  if floor(x / size) ~= record._cx0 or floor(y / size) ~= record._cy0
+    or floor((x + width) / size) ~= record._cx1 or floor((y + height) / size) ~= record._cy1 then
+    self:remove(record)
+    self:insert(record, x, y, width, height)
+  end
+end
+
 ---Removes `record` from the cells it was inserted in.
 function Hash:remove(record)
   local cells = self._cells
@@ -107,57 +118,72 @@ function Hash:collect(x, y, width, height, stamp, out, n)
 end
 
 
----Where a box moving `delta` along one axis stops among the hashed records (each with
----its box's x, y, width, height copied in, and `item` the box) whose cells the
----rectangle (x, y, width, height) touches, as sweep.stop_forward/backward decide
----(`is_x`: along x; pos, cross, size, cross_size: the box). Records whose box the
----actor's `filter` refuses are skipped. Returns the stop, or nil, and how many records
----stop it there (written to `touch`).
-function Hash:axis_stop(x, y, width, height, stamp, is_x, pos, cross, size, cross_size,
-                        delta, blocks_oneway, actor, filter, touch)
-  local cell_size = self.cell_size
-  local cx0, cy0 = floor(x / cell_size), floor(y / cell_size)
-  local cx1, cy1 = floor((x + width) / cell_size), floor((y + height) / cell_size)
-  local cells = self._cells
-  local forward = delta > 0
-  local edge = pos + size
-  local reach = forward and edge + delta or pos + delta
-  local cross_end = cross + cross_size
-  local best, touched = nil, 0
-  for cy = cy0, cy1 do
-    for cx = cx0, cx1 do
-      local cell = cells[cx + cy * KEY_STRIDE + KEY_OFFSET]
-      if cell then
-        for i = 1, #cell do
-          local record = cell[i]
-          if record._stamp ~= stamp then
-            record._stamp = stamp
-            local low, length, across, across_size
-            if is_x then
-              low, length, across, across_size = record.x, record.width, record.y, record.height
-            else
-              low, length, across, across_size = record.y, record.height, record.x, record.width
-            end
-            if across < cross_end and cross < across + across_size then
-              local stop
-              if forward then
-                stop = stop_forward(low, pos, edge, reach, size, record.oneway, blocks_oneway)
-              else
-                stop = stop_backward(low + length, pos, edge, reach, record.oneway, blocks_oneway)
-              end
-              if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best))
-                and (filter == nil or filter(actor, record.item)) then
-                if stop ~= best then best = stop; touched = 0 end
-                touched = touched + 1
-                touch[touched] = record
-              end
-            end
+-- An axis probe: one box moving along one axis, filled by the caller (world.lua) and
+-- read by the scans below, with the best stop found so far. Keeping these values in a
+-- table instead of passing them down keeps each compiled loop small: LuaJIT aborts a
+-- trace whose exits carry more live values than it can coalesce.
+--   is_x, forward, pos, size, cross, cross_end, edge (pos + size), reach (where the
+--   leading edge gets to), delta, blocks_oneway, actor, filter, touch (records out),
+--   cols, rows (tiles out), best, touched
+grid.probe = {touch = {}, cols = {}, rows = {}}
+
+local function scan_cell(cell, stamp, probe)
+  local pos, edge, reach, size = probe.pos, probe.edge, probe.reach, probe.size
+  local cross, cross_end, is_x, forward = probe.cross, probe.cross_end, probe.is_x,
+    probe.forward
+  for i = 1, #cell do
+    local record = cell[i]
+    if record._stamp ~= stamp then
+      record._stamp = stamp
+      local low, length, across, across_size
+      if is_x then
+        low, length, across, across_size = record.x, record.width, record.y, record.height
+      else
+        low, length, across, across_size = record.y, record.height, record.x, record.width
+      end
+      if across < cross_end and cross < across + across_size then
+        local stop
+        if forward then
+          stop = stop_forward(low, pos, edge, reach, size, record.oneway, probe.blocks_oneway)
+        else
+          stop = stop_backward(low + length, pos, edge, reach, record.oneway, probe.blocks_oneway)
+        end
+        local best = probe.best
+        if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
+          local filter = probe.filter
+          if filter == nil or filter(probe.actor, record.item) then
+            local touched = probe.touched
+            if stop ~= best then probe.best = stop; touched = 0 end
+            touched = touched + 1
+            probe.touch[touched] = record
+            probe.touched = touched
           end
         end
       end
     end
   end
-  return best, touched
+end
+
+---Runs the probe over the hashed records (each with its box's x, y, width, height
+---copied in, and `item` the box) in the cells (cx0..cx1, cy0..cy1): where the box stops,
+---as sweep.stop_forward/backward decide, lands in probe.best, and the records that
+---stop it there in probe.touch[1..probe.touched]. The probe's filter skips records.
+function Hash:axis_stop(cx0, cy0, cx1, cy1, stamp, probe)
+  local cells = self._cells
+  -- one flat loop over the cells: fewer nested loops, fewer traces for LuaJIT
+  local columns = cx1 - cx0 + 1
+  local base = cx0 + cy0 * KEY_STRIDE + KEY_OFFSET
+  for k = 0, columns * (cy1 - cy0 + 1) - 1 do
+    local row = floor(k / columns)
+    local cell = cells[base + (k - row * columns) + row * KEY_STRIDE]
+    if cell then scan_cell(cell, stamp, probe) end
+  end
+end
+
+---The cell range (cx0, cy0, cx1, cy1) a rectangle touches, edges included.
+function Hash:cells_of(x, y, width, height)
+  local size = self.cell_size
+  return floor(x / size), floor(y / size), floor((x + width) / size), floor((y + height) / size)
 end
 
 ---Number of cells the rectangle touches; lets a caller avoid walking a huge empty area.
@@ -269,42 +295,40 @@ local function scan_backward(kinds, stride, cross_stride, first, last, origin, t
   return nil
 end
 
----Nearest tile face met by a box moving `delta` along one axis of the layer (see
----sweep.axis for the arguments and the rules). Returns the face coordinate and how
----many tiles lie on it (their 1-based col and row written to out_cols, out_rows), or
----nil, 0. A face inside the box (the box overlaps a solid tile) counts too, so the
----caller can refuse to go deeper. Scans outward from the box and stops at the first
----face, so a huge move costs at most the layer's width.
-function grid.tile_face(layer, is_x, pos, cross, size, cross_size, delta, blocks_oneway,
-                        out_cols, out_rows)
+---Nearest tile face the probe's box meets in the layer. Returns the face coordinate
+---and how many tiles lie on it (their 1-based col and row written to probe.cols and
+---probe.rows), or nil, 0. A face inside the box (the box overlaps a solid tile) counts
+---too, so the caller can refuse to go deeper. Scans outward from the box and stops at
+---the first face, so a huge move costs at most the layer's width.
+function grid.tile_face(layer, probe)
+  local is_x, pos, edge = probe.is_x, probe.pos, probe.edge
   local origin, tile, inverse, count, stride, cross_stride, first, last
   if is_x then
     origin, tile, inverse, count, stride, cross_stride =
       layer.x, layer.tile_width, layer.inverse_width, layer.cols, 1, layer.cols
-    first, last = span(layer.y, layer.tile_height, layer.inverse_height, layer.rows, cross,
-      cross + cross_size)
+    first, last = span(layer.y, layer.tile_height, layer.inverse_height, layer.rows,
+      probe.cross, probe.cross_end)
   else
     origin, tile, inverse, count, stride, cross_stride =
       layer.y, layer.tile_height, layer.inverse_height, layer.rows, layer.cols, 1
-    first, last = span(layer.x, layer.tile_width, layer.inverse_width, layer.cols, cross,
-      cross + cross_size)
+    first, last = span(layer.x, layer.tile_width, layer.inverse_width, layer.cols,
+      probe.cross, probe.cross_end)
   end
   if first > last then return nil, 0 end
-  local edge = pos + size
   local line, face, oneway_ok
-  if delta > 0 then
+  if probe.forward then
     local from = floor((pos - origin) * inverse)
     if from < 0 then from = 0 end
     line, face, oneway_ok = scan_forward(layer.kinds, stride, cross_stride, first, last,
-      origin, tile, from, count - 1, pos, edge, edge + delta, blocks_oneway)
+      origin, tile, from, count - 1, pos, edge, probe.reach, probe.blocks_oneway)
   else
     local from = ceil((edge - origin) * inverse) - 1
     if from > count - 1 then from = count - 1 end
     line, face, oneway_ok = scan_backward(layer.kinds, stride, cross_stride, first, last,
-      origin, tile, from, pos, edge, pos + delta, blocks_oneway)
+      origin, tile, from, pos, edge, probe.reach, probe.blocks_oneway)
   end
   if line == nil then return nil, 0 end
-  local kinds = layer.kinds
+  local kinds, out_cols, out_rows = layer.kinds, probe.cols, probe.rows
   local found = 0
   local base = line * stride + 1
   for i = first, last do

@@ -2,8 +2,9 @@
 --
 -- Solids never move by themselves and never collide; actors move with world:move and
 -- collide with solids and solid tiles only (not with each other). Solids live in a
--- spatial hash; tile layers are read by index; actors are hashed lazily, only when a
--- query needs them, so moving them costs nothing extra.
+-- spatial hash; tile layers are read by index; actors live in a second hash. A move
+-- only notes that its actor moved; the next query or moving solid brings the noted
+-- actors' cells up to date, so a frame of moves pays nothing for the hash.
 --
 -- A move allocates nothing once the world is warm: candidates go into a reused struct
 -- of arrays, contacts into reused records, and nothing iterates with pairs().
@@ -72,7 +73,8 @@ function world.new_world(opts)
     _set = sweep.new_set(),
     _found = {},
     _order = {},
-    _tile_cols = {}, _tile_rows = {},
+    _near = {}, _crushed = {}, _n_crushed = 0, _crush_stamp = 0,
+    _dirty = {}, _n_dirty = 0,
     _scratch = {x = 0, y = 0, width = 0, height = 0},
     _tall = {x = 0, y = 0, width = 0, height = 0, wall_type = "horizontal"},
     _wide = {x = 0, y = 0, width = 0, height = 0, wall_type = "vertical"},
@@ -138,7 +140,7 @@ function World:add_actor(actor)
   local list = self._actor_list
   list[#list + 1] = record
   record.index = #list
-  record.hashed = false
+  self._actors:insert(record, actor.x, actor.y, actor.width, actor.height)
   return actor
 end
 
@@ -221,12 +223,13 @@ function World:remove(item)
     self._solids:remove(record)
     self._solid_count = self._solid_count - 1
   elseif kind == ACTOR then
-    if record.hashed then self._actors:remove(record) end
+    self._actors:remove(record)
     local list = self._actor_list
     local last = list[#list]
     list[record.index] = last
     last.index = record.index
     list[#list] = nil
+    record.index = nil
   else
     local layers = self._layers
     for i = 1, #layers do
@@ -248,6 +251,7 @@ function World:update(item)
     hash_solid(self, record)
   elseif kind == ACTOR then
     check_box(item, "box", 2)
+    self._actors:moved(record, item.x, item.y, item.width, item.height)
   else
     check_layer_input(item.grid, item.tile_width, item.tile_height, nil)
     if #item.grid ~= item.rows or (item.grid[1] and #item.grid[1] or 0) ~= item.cols then
@@ -358,21 +362,48 @@ end
 local SIDES_X = {[true] = "right", [false] = "left"}
 local SIDES_Y = {[true] = "floor", [false] = "ceiling"}
 
+local probe = grid.probe
+
+-- The hash part of an axis phase: the swept rectangle, clipped to the bounds of
+-- everything solid, scanned with the probe.
+local function hash_phase(self, is_x, pos, cross, size, cross_size, delta)
+  local reach = delta < 0 and -delta or delta
+  local x, y, x1, y1
+  if is_x then
+    x = delta > 0 and pos or pos + delta
+    x1, y, y1 = x + size + reach, cross, cross + cross_size
+  else
+    y = delta > 0 and pos or pos + delta
+    y1, x, x1 = y + size + reach, cross, cross + cross_size
+  end
+  if x < self._min_x then x = self._min_x end
+  if y < self._min_y then y = self._min_y end
+  if x1 > self._max_x then x1 = self._max_x end
+  if y1 > self._max_y then y1 = self._max_y end
+  if x <= x1 and y <= y1 then
+    local cx0, cy0, cx1, cy1 = self._solids:cells_of(x, y, x1 - x, y1 - y)
+    self._solids:axis_stop(cx0, cy0, cx1, cy1, next_stamp(), probe)
+  end
+end
+
 -- Moves along one axis up to the nearest stop among tiles and boxes; returns the new
 -- position on that axis and records the contacts that stop it there.
 local function axis_phase(self, actor, filter, is_x, pos, cross, size, cross_size, delta)
-  local blocks_oneway = not is_x and delta > 0
   local forward = delta > 0
+  probe.is_x, probe.forward, probe.delta = is_x, forward, delta
+  probe.pos, probe.size, probe.edge = pos, size, pos + size
+  probe.reach = forward and pos + size + delta or pos + delta
+  probe.cross, probe.cross_end = cross, cross + cross_size
+  probe.blocks_oneway = not is_x and forward
+  probe.actor, probe.filter = actor, filter
   local side = is_x and SIDES_X[forward] or SIDES_Y[forward]
   local first_hit = self._n_hits
   local best
   local layers = self._layers
-  local cols, rows = self._tile_cols, self._tile_rows
   for k = 1, #layers do
     local layer = layers[k]
     if filter == nil or filter(actor, layer) then
-      local face, count = tile_face(layer, is_x, pos, cross, size, cross_size, delta,
-        blocks_oneway, cols, rows)
+      local face, count = tile_face(layer, probe)
       local stop = face
       if face then
         if forward then stop = face >= pos + size and before(face, size) or pos
@@ -381,6 +412,7 @@ local function axis_phase(self, actor, filter, is_x, pos, cross, size, cross_siz
       if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
         if stop ~= best then best = stop; self._n_hits = first_hit end
         local id = self._records[layer].id
+        local cols, rows = probe.cols, probe.rows
         for c = 1, count do
           local col, row = cols[c], rows[c]
           add_hit(self, layer, side, col, row, layer.y + (row - 1) * layer.tile_height,
@@ -390,33 +422,20 @@ local function axis_phase(self, actor, filter, is_x, pos, cross, size, cross_siz
     end
   end
   if self._solid_count > 0 then
-    -- the swept rectangle, clipped to the bounds of everything solid
-    local reach = delta < 0 and -delta or delta
-    local x, y, width, height
-    if is_x then
-      x, y, width, height = forward and pos or pos + delta, cross, size + reach, cross_size
-    else
-      x, y, width, height = cross, forward and pos or pos + delta, cross_size, size + reach
-    end
-    local x1, y1 = x + width, y + height
-    if x < self._min_x then x = self._min_x end
-    if y < self._min_y then y = self._min_y end
-    if x1 > self._max_x then x1 = self._max_x end
-    if y1 > self._max_y then y1 = self._max_y end
-    if x <= x1 and y <= y1 then
-      local touch = self._found
-      local stop, count = self._solids:axis_stop(x, y, x1 - x, y1 - y, next_stamp(), is_x, pos,
-        cross, size, cross_size, delta, blocks_oneway, actor, filter, touch)
-      if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
-        if stop ~= best then best = stop; self._n_hits = first_hit end
-        for t = 1, count do
-          local record = touch[t]
-          local item = record.item
-          add_hit(self, item, side, nil, nil, item.y, item.x, record.id)
-        end
+    probe.best, probe.touched = nil, 0
+    hash_phase(self, is_x, pos, cross, size, cross_size, delta)
+    local stop = probe.best
+    if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
+      if stop ~= best then best = stop; self._n_hits = first_hit end
+      local touch = probe.touch
+      for t = 1, probe.touched do
+        local record = touch[t]
+        local item = record.item
+        add_hit(self, item, side, nil, nil, item.y, item.x, record.id)
       end
     end
   end
+  probe.actor, probe.filter = nil, nil
   if best == nil then return pos + delta end
   return best
 end
@@ -638,34 +657,214 @@ function World:move(actor, dx, dy, method)
   end
   self._n_hits = 0
   move(self, actor, dx, dy, filter, method)
+  if not record.dirty then
+    record.dirty = true
+    local n = self._n_dirty + 1
+    self._dirty[n] = record
+    self._n_dirty = n
+  end
   sort_hits(self)
   return actor.x, actor.y, self._n_hits, self._hits
 end
 
--- Queries ----------------------------------------------------------------------------
+-- Moving solids ----------------------------------------------------------------------
+--
+-- The actors-and-solids rule of the Celeste and TowerFall games, done with exact faces:
+-- a solid moves along x, then along y, and is never blocked. On each axis, an actor in
+-- the band the solid sweeps is pushed ahead of it, to exactly its new face; an actor
+-- that was riding it (standing on its top when the move began) and is not pushed is
+-- carried by the same distance. Pushed and carried actors move like any actor (the
+-- moving solid aside), so they stop against other solids; a pushed actor that cannot get
+-- out of the way is crushed. Actors are handled in the world's actor order.
 
--- Brings the actor hash up to date with where the actors are now.
-local function sync_actors(self)
-  local actors, list = self._actors, self._actor_list
+-- Moves `actor` along one axis to `target` against everything but the moving solid
+-- (already out of the hash); lands exactly on `target` when nothing is in the way.
+-- Returns true when it got there.
+local function shove(self, record, is_x, target)
+  local actor = record.item
+  local filter = actor.filter
+  if filter ~= nil and type(filter) ~= "function" then filter = nil end
+  self._n_hits = 0
+  local x, y, width, height = actor.x, actor.y, actor.width, actor.height
+  local arrived
+  if is_x then
+    if target ~= x then
+      x = axis_phase(self, actor, filter, true, x, y, width, height, target - x)
+      if self._n_hits == 0 then x = target end
+    end
+    arrived = x == target
+  else
+    if target ~= y then
+      y = axis_phase(self, actor, filter, false, y, x, height, width, target - y)
+      if self._n_hits == 0 then y = target end
+    end
+    arrived = y == target
+  end
+  actor.x, actor.y = x, y
+  self._actors:moved(record, x, y, width, height)
+  return arrived
+end
+
+local function crush(self, record)
+  if record.crush_stamp == self._crush_stamp then return end
+  record.crush_stamp = self._crush_stamp
+  local n = self._n_crushed + 1
+  self._crushed[n] = record.item
+  self._n_crushed = n
+end
+
+-- Brings the cells of the actors moved since the last call up to date.
+local function rehash_moved(self)
+  local dirty, actors = self._dirty, self._actors
+  for i = 1, self._n_dirty do
+    local record = dirty[i]
+    dirty[i] = nil
+    record.dirty = false
+    if record.index then -- still in the world
+      local item = record.item
+      actors:moved(record, item.x, item.y, item.width, item.height)
+    end
+  end
+  self._n_dirty = 0
+end
+
+-- The actor records whose boxes touch the rectangle (edges included), in the world's
+-- actor order, into self._near; returns their count. A straight pass over the actor
+-- list: one small loop that LuaJIT compiles once, cheaper here than keeping the actor
+-- hash current on every move (100 solids x 1000 actors is 100000 box tests a frame).
+local function near_actors(self, x, y, width, height)
+  local near, list = self._near, self._actor_list
+  local x1, y1 = x + width, y + height
+  local n = 0
   for i = 1, #list do
     local record = list[i]
-    local item = record.item
-    local x, y, width, height = item.x, item.y, item.width, item.height
-    if not record.hashed or record.hx ~= x or record.hy ~= y or record.hw ~= width
-      or record.hh ~= height then
-      if record.hashed then actors:remove(record) end
-      actors:insert(record, x, y, width, height)
-      record.hashed = true
-      record.hx, record.hy, record.hw, record.hh = x, y, width, height
+    local actor = record.item
+    local ax, ay = actor.x, actor.y
+    if ax <= x1 and x <= ax + actor.width and ay <= y1 and y <= ay + actor.height then
+      n = n + 1
+      near[n] = record
+    end
+  end
+  for i = n + 1, #near do near[i] = nil end
+  return n
+end
+
+-- One axis of a solid's move: push what is in its sweep, carry its riders.
+local function solid_phase(self, solid, oneway, is_x, delta, ride_stamp)
+  local x, y, width, height = solid.x, solid.y, solid.width, solid.height
+  local reach = delta < 0 and -delta or delta
+  local near = self._near
+  local count
+  if is_x then
+    count = near_actors(self, delta < 0 and x + delta or x, y - 1, width + reach, height + 1)
+    solid.x = x + delta
+  else
+    count = near_actors(self, x, delta < 0 and y + delta - 1 or y - 1, width, height + reach + 1)
+    solid.y = y + delta
+  end
+  for k = 1, count do
+    local record = near[k]
+    local actor = record.item
+    local ax, ay, aw, ah = actor.x, actor.y, actor.width, actor.height
+    local target
+    if is_x then
+      -- the band swept along x, for actors overlapping it strictly on y
+      if not oneway and ay < y + height and y < ay + ah then
+        if delta > 0 and ax + aw > x and ax < x + width + delta then
+          target = x + width + delta
+        elseif delta < 0 and ax < x + width and ax + aw > x + delta then
+          target = before(x + delta, aw)
+        end
+      end
+      if target then
+        if not shove(self, record, true, target) then crush(self, record) end
+      elseif record.ride_stamp == ride_stamp then
+        shove(self, record, true, ax + delta)
+      end
+    else
+      if ax < x + width and x < ax + aw then
+        if delta < 0 and ay < y + height and ay + ah > y + delta
+          and (not oneway or ay + ah <= y) then
+          target = before(y + delta, ah)
+        elseif delta > 0 and not oneway and ay + ah > y + height and ay < y + height + delta then
+          target = y + height + delta
+        end
+      end
+      if target then
+        if not shove(self, record, false, target) then crush(self, record) end
+      elseif record.ride_stamp == ride_stamp then
+        -- carried down (or along, if pushed no further): rest exactly on the new top
+        shove(self, record, false, before(y + delta, ah))
+      end
     end
   end
 end
+
+-- On LuaJIT, the loop over the actors near a moving solid is left to the interpreter:
+-- compiled, it inlines a whole actor move per actor (tiles, hash, pushes, crushes) and
+-- spawns more side traces than LuaJIT keeps (1000), which flushes every trace in the
+-- program again and again (measured: 5000 traces and 12 flushes in 300 frames of
+-- bench/platforms.lua). The moves it calls still run their own compiled loops.
+local jit = rawget(_G, "jit")
+if jit and jit.off then jit.off(solid_phase) end
+
+---Moves a solid by (dx, dy), never blocked: it pushes actors in its way by exactly the
+---distance needed, carries the actors riding it (standing on its top when the move
+---begins), and crushes an actor that a push cannot move out of its way because another
+---solid blocks it. A crushed actor is never moved through a solid; it is reported in
+---the returned array (owned by the world, valid until the next move_solid) and, if it
+---has one, by `actor.on_crush(actor, solid)`, once per move. A oneway solid carries its
+---riders but never pushes from below or from the sides. Contacts of world:move are not
+---valid after this call.
+---@param solid budge.Box a solid of this world
+---@param dx number
+---@param dy number
+---@return integer n, budge.Box[] crushed
+function World:move_solid(solid, dx, dy)
+  local record = self._records[solid]
+  if record == nil or record.kind ~= SOLID then
+    error(format("solid must be a solid of this world (add it with world:add_solid), got %s",
+      record and ("an " .. record.kind) or describe(solid)), 2)
+  end
+  check_box(solid, "solid", 2)
+  check_number(dx, "dx", 2)
+  check_number(dy, "dy", 2)
+  local stamp = self._crush_stamp + 1
+  self._crush_stamp = stamp
+  self._n_crushed = 0
+  -- riders are decided once, where the solid stands before it moves
+  local top, left, right = solid.y, solid.x, solid.x + solid.width
+  local near = self._near
+  for k = 1, near_actors(self, left, top - 1, solid.width, 1) do
+    local actor = near[k].item
+    if actor.x < right and left < actor.x + actor.width and actor.y == before(top, actor.height) then
+      near[k].ride_stamp = stamp
+    end
+  end
+  self._solids:remove(record)
+  self._solid_count = self._solid_count - 1 -- out of every actor's way while it moves
+  local oneway = record.oneway
+  if dx ~= 0 then solid_phase(self, solid, oneway, true, dx, stamp) end
+  if dy ~= 0 then solid_phase(self, solid, oneway, false, dy, stamp) end
+  self._solid_count = self._solid_count + 1
+  hash_solid(self, record)
+  self._n_hits = 0
+  local crushed, n = self._crushed, self._n_crushed
+  for i = n + 1, #crushed do crushed[i] = nil end
+  for i = 1, n do
+    local on_crush = crushed[i].on_crush
+    if type(on_crush) == "function" then on_crush(crushed[i], solid) end
+  end
+  return n, crushed
+end
+
+-- Queries ----------------------------------------------------------------------------
 
 local function record_before(a, b) return a.id < b.id end
 
 -- Records of boxes (solids and actors) that touch the rectangle, into self._found.
 local function collect_boxes(self, x, y, width, height)
-  sync_actors(self)
+  rehash_moved(self)
   local found, stamp = self._found, next_stamp()
   local n = 0
   local x1, y1 = x + width, y + height
@@ -676,7 +875,7 @@ local function collect_boxes(self, x, y, width, height)
   if self._solid_count > 0 and cx <= cx1 and cy <= cy1 then
     n = self._solids:collect(cx, cy, cx1 - cx, cy1 - cy, stamp, found, n)
   end
-  -- actors are few and anywhere: clip to their own hash only by the rectangle
+  -- actors can be anywhere: a huge rectangle walks the actor list instead of the cells
   if #self._actor_list > 0 and self._actors:cell_count(x, y, width, height) <= 4 * #self._actor_list then
     n = self._actors:collect(x, y, width, height, stamp, found, n)
   else

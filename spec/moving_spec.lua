@@ -1,0 +1,161 @@
+-- Moving solids: carry, push, crush (world:move_solid).
+local budge = require("budge")
+
+local function box(x, y, width, height, wall_type)
+  return {x = x, y = y, width = width, height = height, wall_type = wall_type}
+end
+
+describe("world:move_solid", function()
+  it("takes a rider up and down an elevator, exactly on top every frame", function()
+    local world = budge.new_world()
+    local lift = world:add_solid(box(0, 200, 48, 8))
+    local rider = world:add_actor(box(10, 188, 12, 12))
+    for frame = 1, 120 do
+      local dy = frame <= 60 and -1.5 or 1.25
+      local n = world:move_solid(lift, 0, dy)
+      world:move(rider, 0, 0.5) -- gravity: pressed onto the lift, never into it
+      assert.equal(0, n)
+      assert.equal(lift.y - 12, rider.y)
+      assert.equal(10, rider.x)
+    end
+    assert.equal(200 - 90 + 75, lift.y)
+  end)
+
+  it("carries a rider sideways into a wall, then lets it fall off the edge", function()
+    local world = budge.new_world()
+    world:add_solid(box(100, 0, 16, 300)) -- a wall on the right
+    local platform = world:add_solid(box(20, 200, 48, 8))
+    local rider = world:add_actor(box(50, 188, 12, 12))
+    local fell_at
+    for frame = 1, 60 do
+      world:move_solid(platform, 2, 0)
+      local _, _, n = world:move(rider, 0, 1)
+      if n == 0 and not fell_at then fell_at = frame end
+    end
+    -- the rider stopped at the wall (x = 88) on frame 19 while the platform went on;
+    -- it fell once the platform's left edge passed its right edge (20 + 2f >= 100)
+    assert.equal(88, rider.x)
+    assert.equal(140, platform.x)
+    assert.equal(40, fell_at)
+    assert.is_true(rider.y > 188)
+  end)
+
+  it("pushes two actors stacked against its side by exactly the distance needed", function()
+    local world = budge.new_world()
+    local pusher = world:add_solid(box(0, 100, 16, 32))
+    local low = world:add_actor(box(16, 120, 12, 12))
+    local high = world:add_actor(box(18, 104, 12, 12))
+    local n = world:move_solid(pusher, 10, 0)
+    assert.equal(0, n)
+    assert.same({26, 120, 26, 104}, {low.x, low.y, high.x, high.y})
+  end)
+
+  it("crushes an actor against a wall once, naming the solid that did it", function()
+    local world = budge.new_world()
+    world:add_solid(box(100, 0, 16, 200))
+    local press = world:add_solid(box(40, 100, 32, 32))
+    local victim = world:add_actor(box(80, 110, 12, 12))
+    local calls = {}
+    victim.on_crush = function(actor, by) calls[#calls + 1] = {actor, by} end
+    local n, crushed = world:move_solid(press, 30, 5)
+    assert.equal(1, n)
+    assert.equal(victim, crushed[1])
+    assert.same({{victim, press}}, calls)
+    assert.equal(88, victim.x) -- stopped at the wall, not moved through it
+    n = world:move_solid(press, -30, 0)
+    assert.equal(0, n)
+  end)
+
+  it("pushes or crushes a standing actor with a 200 px step; nothing tunnels", function()
+    local world = budge.new_world()
+    world:add_solid(box(0, 200, 1000, 16)) -- floor
+    local ram = world:add_solid(box(0, 168, 32, 32))
+    local walker = world:add_actor(box(100, 188, 12, 12))
+    local n = world:move_solid(ram, 200, 0)
+    assert.equal(0, n)
+    assert.same({232, 188}, {walker.x, walker.y})
+    world:add_solid(box(300, 100, 16, 100)) -- a wall ahead
+    n = world:move_solid(ram, 200, 0)
+    assert.equal(1, n)
+    assert.equal(288, walker.x)
+  end)
+
+  it("raises a oneway platform through an actor standing in its way, then carries it once on top",
+    function()
+      local world = budge.new_world()
+      world:add_solid(box(0, 112, 100, 16)) -- the ground
+      -- the platform's top (110) is above the actor's feet (112): it comes from below
+      local platform = world:add_solid(box(0, 110, 48, 8, "oneway"))
+      local actor = world:add_actor(box(10, 100, 12, 12))
+      world:move_solid(platform, 0, -16)
+      assert.same({10, 100}, {actor.x, actor.y})
+      world:move_solid(platform, 0, -16)
+      assert.same({10, 100, 78}, {actor.x, actor.y, platform.y})
+      actor.y = platform.y - 12 -- the game puts it on top
+      world:move_solid(platform, 0, -10)
+      assert.same({10, 56}, {actor.x, actor.y})
+      world:move_solid(platform, 30, 0) -- carries; never pushes from the side
+      assert.same({40, 56}, {actor.x, actor.y})
+      local other = world:add_actor(box(80, 60, 12, 12))
+      world:move_solid(platform, 20, 0)
+      assert.same({60, 80}, {actor.x, other.x})
+    end)
+
+  it("carries an actor across two platforms moving apart by each in turn", function()
+    local world = budge.new_world()
+    local left = world:add_solid(box(0, 100, 40, 8))
+    local right = world:add_solid(box(40, 100, 40, 8))
+    local actor = world:add_actor(box(34, 88, 12, 12))
+    local trace = {}
+    for _ = 1, 5 do
+      world:move_solid(left, -2, 0)
+      world:move_solid(right, 2, 0)
+      trace[#trace + 1] = actor.x
+    end
+    -- riding is decided when each move starts: left takes it 2 px left, right brings it
+    -- back, until it no longer overlaps the right one; then it goes with the left one
+    assert.same({34, 34, 32, 30, 28}, trace)
+    assert.equal(88, actor.y)
+  end)
+
+  it("rejects what is not a solid of this world, and bad displacements", function()
+    local world = budge.new_world()
+    local actor = world:add_actor(box(0, 0, 8, 8))
+    local solid = world:add_solid(box(20, 0, 8, 8))
+    assert.has_error(function() world:move_solid(actor, 1, 0) end,
+      "solid must be a solid of this world (add it with world:add_solid), got an actor")
+    assert.has_error(function() world:move_solid(box(0, 0, 1, 1), 1, 0) end,
+      "solid must be a solid of this world (add it with world:add_solid), got a table")
+    assert.has_error(function() world:move_solid(solid, 0 / 0, 0) end, "dx must be a finite number, got nan")
+    assert.same({20, 0}, {solid.x, solid.y})
+  end)
+
+  it("keeps the moved solid findable and the world garbage-free", function()
+    local world = budge.new_world()
+    local platforms, actors = {}, {}
+    for i = 1, 20 do
+      platforms[i] = world:add_solid(box(i * 60, 300, 40, 8))
+      actors[i] = world:add_actor(box(i * 60 + 10, 288, 12, 12))
+    end
+    local function frame(f)
+      for i = 1, 20 do
+        world:move_solid(platforms[i], ((f + i) % 5) - 2, ((f * 3 + i) % 5) - 2)
+        world:move(actors[i], 0, 1)
+      end
+    end
+    local jit = rawget(_G, "jit")
+    if jit then jit.off(); jit.flush() end
+    for f = 1, 300 do frame(f) end
+    collectgarbage("collect")
+    collectgarbage("stop")
+    frame(1)
+    local before = collectgarbage("count")
+    for f = 1, 300 do frame(f) end
+    local after = collectgarbage("count")
+    collectgarbage("restart")
+    if jit then jit.on() end
+    assert.equal(0, (after - before) * 1024)
+    local out, n = world:query_point(platforms[3].x + 1, platforms[3].y + 1)
+    assert.same({1, platforms[3]}, {n, out[1]})
+  end)
+end)
