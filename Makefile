@@ -14,3 +14,5 @@ spec:
 bench-world:
 	luajit bench/world.lua --runs 3
 	lua5.4 bench/world.lua --runs 3 --frames 60
+	luajit bench/platforms.lua --runs 5
+	lua5.4 bench/platforms.lua --runs 3 --frames 100
