@@ -13,36 +13,9 @@ package.path = "./src/?.lua;./src/?/init.lua;./?.lua;" .. package.path
 local budge = require("budge")
 local common = require("bench.common")
 
-local MAP, TILE, SIZE = 200, 16, 12
-
-local function make_scene(seed)
-  local random = common.new_random(seed)
-  local grid = {}
-  for row = 1, MAP do
-    local line = {}
-    for col = 1, MAP do
-      line[col] = row == 1 or row == MAP or col == 1 or col == MAP or random() < 0.2
-    end
-    grid[row] = line
-  end
-  return grid, random
-end
-
-local function make_actors(grid, random, count)
-  local starts = {}
-  while #starts < count do
-    local col, row = random(2, MAP - 1), random(2, MAP - 1)
-    if not grid[row][col] then
-      local angle = random() * 2 * math.pi
-      local speed = 1 + random() * 7
-      starts[#starts + 1] = {
-        x = (col - 1) * TILE + 2, y = (row - 1) * TILE + 2,
-        dx = math.cos(angle) * speed, dy = math.sin(angle) * speed,
-      }
-    end
-  end
-  return starts
-end
+local scene = require("bench.scene")
+local MAP, TILE, SIZE = scene.MAP, scene.TILE, scene.SIZE
+local make_scene, make_actors = scene.make_scene, scene.make_actors
 
 -- (c) the reference: exact faces, strict overlap, x then y, straight against the array.
 local floor = math.floor
@@ -105,7 +78,7 @@ local function reference_move(grid, actor, dx, dy)
   actor.x, actor.y = x, y
 end
 
-local function setup(way, grid, starts)
+local function setup(way, grid, starts, method)
   local actors = {}
   for i = 1, #starts do
     actors[i] = {x = starts[i].x, y = starts[i].y, width = SIZE, height = SIZE,
@@ -158,7 +131,7 @@ local function setup(way, grid, starts)
     step = function()
       for i = 1, #actors do
         local actor = actors[i]
-        move(world, actor, actor.dx, actor.dy)
+        move(world, actor, actor.dx, actor.dy, method)
       end
     end
   end
@@ -166,8 +139,8 @@ local function setup(way, grid, starts)
 end
 
 -- One timed run: warm-up frames, then `frames` frames with the GC stopped.
-local function run(way, grid, starts, frames)
-  local actors, step = setup(way, grid, starts)
+local function run(way, grid, starts, frames, method)
+  local actors, step = setup(way, grid, starts, method)
   for _ = 1, 20 do step() end
   collectgarbage("collect")
   collectgarbage("stop")
@@ -180,6 +153,10 @@ local function run(way, grid, starts, frames)
   collectgarbage("restart")
   collectgarbage("collect")
   return elapsed * 1e9 / (frames * #actors), allocated / frames, actors
+end
+
+if ... == "bench.world" then -- required by bench/run.lua: export the timing, run nothing
+  return {run = run, make_scene = make_scene, make_actors = make_actors}
 end
 
 local options = common.options(arg, {actors = "100,1000,10000", frames = 600, runs = 3,

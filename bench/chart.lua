@@ -1,0 +1,174 @@
+-- bench/chart.lua: draws the charts from bench/results/*.csv into docs/.
+--   docs/speed-vs-accuracy.svg  ns per move (log) against accuracy, per method and interpreter
+--   docs/envelopes.svg          largest safe speed against wall thickness, measured and analytic
+package.path = "./?.lua;" .. package.path
+local svg = require("bench.svg")
+
+local function parse_line(line)
+  local fields, position = {}, 1
+  while position <= #line + 1 do
+    if line:sub(position, position) == '"' then
+      local close = line:find('"', position + 1, true)
+      fields[#fields + 1] = line:sub(position + 1, close - 1)
+      position = close + 2
+    else
+      local comma = line:find(",", position, true) or #line + 1
+      fields[#fields + 1] = line:sub(position, comma - 1)
+      position = comma + 1
+    end
+  end
+  return fields
+end
+
+local function read_csv(path)
+  local file = io.open(path, "r")
+  if not file then return nil end
+  local header, rows = nil, {}
+  for line in file:lines() do
+    local fields = parse_line(line)
+    if not header then
+      header = fields
+    else
+      local row = {}
+      for i, name in ipairs(header) do row[name] = tonumber(fields[i]) or fields[i] end
+      rows[#rows + 1] = row
+    end
+  end
+  file:close()
+  return rows
+end
+
+local COLORS = {seed = "#d62728", wall_type = "#ff7f0e", fat_cross = "#9467bd",
+  min_axis = "#8c564b", axis_sweep = "#2ca02c", swept = "#1f77b4", auto = "#17becf"}
+local METHOD_ORDER = {"seed", "wall_type", "fat_cross", "min_axis", "axis_sweep", "swept", "auto"}
+
+-- speed against accuracy -------------------------------------------------------------
+local series = {}
+for _, tag in ipairs({"luajit", "lua5.4", "lua5.1", "lua5.2", "lua5.3"}) do
+  local rows = read_csv("bench/results/" .. tag .. ".csv")
+  if rows then series[#series + 1] = {tag = tag, rows = rows} end
+end
+assert(#series > 0, "no bench/results/<interpreter>.csv: run bench/run.lua first")
+
+local low, high = math.huge, 0
+for _, s in ipairs(series) do
+  for _, row in ipairs(s.rows) do
+    low = math.min(low, row.ns_per_move)
+    high = math.max(high, row.ns_per_move)
+  end
+end
+local x_min = 10 ^ math.floor(math.log(low * 0.7, 10))
+local x_max = 10 ^ math.ceil(math.log(high * 1.4, 10))
+local x_ticks = {}
+local decade = x_min
+while decade <= x_max + 1e-9 do
+  for _, m in ipairs({1, 2, 5}) do
+    if decade * m <= x_max + 1e-9 then x_ticks[#x_ticks + 1] = decade * m end
+  end
+  decade = decade * 10
+end
+
+local drawing = svg.new(900, 560)
+drawing:text(450, 30, "budge: speed against accuracy, one point per method and interpreter",
+  {text_anchor = "middle", font_size = 17, font_weight = "bold"})
+local plot = drawing:plot(90, 60, 560, 420, {
+  x = {min = x_min, max = x_max, log = true, ticks = x_ticks,
+    label = "cost: ns per move on the world bench scene (log scale; left is faster)",
+    format = function(v) return ("%g"):format(v) end},
+  y = {min = 40, max = 100, ticks = {40, 50, 60, 70, 80, 90, 100},
+    label = "accuracy: % of catalogue cases right",
+    format = function(v) return v .. "%" end},
+})
+local MARKERS = {luajit = "circle", ["lua5.4"] = "square"}
+for _, s in ipairs(series) do
+  for _, row in ipairs(s.rows) do
+    local x, y = plot.x(row.ns_per_move), plot.y(row.accuracy_percent)
+    local color = COLORS[row.method] or "#333"
+    if (MARKERS[s.tag] or "square") == "circle" then
+      drawing:circle(x, y, 7, {fill = color, stroke = "black", stroke_width = 1})
+    else
+      drawing:rect(x - 6, y - 6, 12, 12, {fill = color, stroke = "black", stroke_width = 1})
+    end
+    drawing:text(x + 10, y + (s.tag == "luajit" and -6 or 16), row.method,
+      {font_size = 12, fill = color})
+  end
+end
+-- legend
+local legend_x, legend_y = 675, 70
+drawing:text(legend_x, legend_y, "method", {font_weight = "bold"})
+local line = 1
+for _, method in ipairs(METHOD_ORDER) do
+  local present = false
+  for _, s in ipairs(series) do
+    for _, row in ipairs(s.rows) do if row.method == method then present = true end end
+  end
+  if present then
+    drawing:rect(legend_x, legend_y + line * 20 - 10, 12, 12, {fill = COLORS[method]})
+    drawing:text(legend_x + 20, legend_y + line * 20, method)
+    line = line + 1
+  end
+end
+line = line + 1
+drawing:text(legend_x, legend_y + line * 20, "interpreter", {font_weight = "bold"})
+for _, s in ipairs(series) do
+  line = line + 1
+  local y = legend_y + line * 20 - 4
+  if (MARKERS[s.tag] or "square") == "circle" then
+    drawing:circle(legend_x + 6, y, 6, {fill = "#bbb", stroke = "black"})
+  else
+    drawing:rect(legend_x, y - 6, 12, 12, {fill = "#bbb", stroke = "black"})
+  end
+  drawing:text(legend_x + 20, y + 4, s.rows[1].interpreter)
+end
+drawing:text(legend_x, 470, ("%d cases per method"):format(series[1].rows[1].cases),
+  {font_size = 12})
+drawing:text(legend_x, 488, "machine: " .. (series[1].rows[1].machine or "?"), {font_size = 11})
+drawing:write("docs/speed-vs-accuracy.svg")
+print("wrote docs/speed-vs-accuracy.svg")
+
+-- envelopes --------------------------------------------------------------------------
+local envelopes = assert(read_csv("bench/results/envelopes.csv"), "no envelopes.csv")
+local by_method, order = {}, {}
+for _, row in ipairs(envelopes) do
+  if not by_method[row.method] then by_method[row.method] = {}; order[#order + 1] = row.method end
+  local list = by_method[row.method]
+  list[#list + 1] = row
+end
+local chart = svg.new(900, 560)
+chart:text(450, 30, "Where each discrete method fails: largest safe speed, 12 px mover",
+  {text_anchor = "middle", font_size = 17, font_weight = "bold"})
+local area = chart:plot(90, 60, 560, 420, {
+  x = {min = 1, max = 64, log = true, ticks = {1, 2, 4, 8, 16, 32, 64},
+    label = "wall thickness, px (log scale)"},
+  y = {min = 0.25, max = 64, log = true, ticks = {0.25, 0.5, 1, 2, 4, 8, 16, 32, 64},
+    label = "largest speed still resolved correctly, px per step (log)",
+    format = function(v) return ("%g"):format(v) end},
+})
+for _, method in ipairs(order) do
+  local rows = by_method[method]
+  local color = COLORS[method] or "#333"
+  local points = {}
+  for _, row in ipairs(rows) do points[#points + 1] = {area.x(row.thickness), area.y(row.analytic)} end
+  chart:polyline(points, {stroke = color, stroke_width = 2, stroke_dasharray = "6 4"})
+  for _, row in ipairs(rows) do
+    chart:circle(area.x(row.thickness), area.y(math.max(row.measured, 0.25)), 5,
+      {fill = color, stroke = "black", stroke_width = 1})
+  end
+end
+local ly = 70
+chart:text(675, ly, "measured (dots) and", {font_weight = "bold"})
+chart:text(675, ly + 18, "analytic (dashed)", {font_weight = "bold"})
+local FORMULAS = {seed = "seed: T/2 (from right/below)", wall_type = "wall_type: < (S+T)/2",
+  min_axis = "min_axis: < (S+T)/2", fat_cross = "fat_cross: 3/8 T (side hits)"}
+for i, method in ipairs(order) do
+  local y = ly + 24 + i * 22
+  chart:line(675, y - 4, 700, y - 4, {stroke = COLORS[method], stroke_width = 2,
+    stroke_dasharray = "6 4"})
+  chart:circle(687, y - 4, 4, {fill = COLORS[method], stroke = "black"})
+  chart:text(708, y, FORMULAS[method] or method, {font_size = 12})
+end
+chart:text(675, ly + 24 + (#order + 2) * 22, "S = mover size (12), T = thickness", {font_size = 12})
+chart:text(675, ly + 24 + (#order + 3) * 22, "wall_type and min_axis coincide", {font_size = 12})
+chart:text(675, ly + 24 + (#order + 4) * 22, "axis_sweep, swept: no limit", {font_size = 12})
+chart:write("docs/envelopes.svg")
+print("wrote docs/envelopes.svg")
