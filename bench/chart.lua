@@ -80,6 +80,15 @@ local plot = drawing:plot(90, 60, 560, 420, {
     format = function(v) return v .. "%" end},
 })
 local MARKERS = {luajit = "circle", ["lua5.4"] = "square"}
+-- Labels are placed after all markers, each at the first free spot near its point
+-- (never over another label or marker), with a leader line when it had to move away.
+local taken, labels = {}, {}
+local function free(x0, y0, x1, y1)
+  for _, r in ipairs(taken) do
+    if x0 < r[3] and r[1] < x1 and y0 < r[4] and r[2] < y1 then return false end
+  end
+  return true
+end
 for _, s in ipairs(series) do
   for _, row in ipairs(s.rows) do
     local x, y = plot.x(row.ns_per_move), plot.y(row.accuracy_percent)
@@ -89,8 +98,28 @@ for _, s in ipairs(series) do
     else
       drawing:rect(x - 6, y - 6, 12, 12, {fill = color, stroke = "black", stroke_width = 1})
     end
-    drawing:text(x + 10, y + (s.tag == "luajit" and -6 or 16), row.method,
-      {font_size = 12, fill = color})
+    taken[#taken + 1] = {x - 7, y - 7, x + 7, y + 7}
+    labels[#labels + 1] = {x = x, y = y, text = row.method, color = color}
+  end
+end
+local OFFSETS = {{10, -8}, {10, 14}, {-10, -8}, {-10, 14}}
+for distance = 1, 8 do
+  OFFSETS[#OFFSETS + 1] = {10, -8 - 15 * distance}
+  OFFSETS[#OFFSETS + 1] = {10, 14 + 15 * distance}
+end
+for _, label in ipairs(labels) do
+  local width = 7 * #label.text
+  for i, offset in ipairs(OFFSETS) do
+    local left = offset[1] > 0 and label.x + offset[1] or label.x + offset[1] - width
+    local base = label.y + offset[2]
+    if free(left, base - 11, left + width, base + 3) or i == #OFFSETS then
+      taken[#taken + 1] = {left, base - 11, left + width, base + 3}
+      if i > 4 then
+        drawing:line(label.x, label.y, left, base - 4, {stroke = label.color, stroke_width = 1})
+      end
+      drawing:text(left, base, label.text, {font_size = 12, fill = label.color})
+      break
+    end
   end
 end
 -- legend
@@ -144,14 +173,23 @@ local area = chart:plot(90, 60, 560, 420, {
     label = "largest speed still resolved correctly, px per step (log)",
     format = function(v) return ("%g"):format(v) end},
 })
-for _, method in ipairs(order) do
+for i, method in ipairs(order) do
   local rows = by_method[method]
   local color = COLORS[method] or "#333"
   local points = {}
   for _, row in ipairs(rows) do points[#points + 1] = {area.x(row.thickness), area.y(row.analytic)} end
   chart:polyline(points, {stroke = color, stroke_width = 2, stroke_dasharray = "6 4"})
+  -- a method whose dots a later one covers exactly is drawn larger, so both show
+  local covered = false
+  for j = i + 1, #order do
+    local same = true
+    for k, row in ipairs(by_method[order[j]]) do
+      if row.measured ~= rows[k].measured then same = false end
+    end
+    covered = covered or same
+  end
   for _, row in ipairs(rows) do
-    chart:circle(area.x(row.thickness), area.y(math.max(row.measured, 0.25)), 5,
+    chart:circle(area.x(row.thickness), area.y(math.max(row.measured, 0.25)), covered and 9 or 5,
       {fill = color, stroke = "black", stroke_width = 1})
   end
 end
@@ -168,7 +206,7 @@ for i, method in ipairs(order) do
   chart:text(708, y, FORMULAS[method] or method, {font_size = 12})
 end
 chart:text(675, ly + 24 + (#order + 2) * 22, "S = mover size (12), T = thickness", {font_size = 12})
-chart:text(675, ly + 24 + (#order + 3) * 22, "wall_type and min_axis coincide", {font_size = 12})
+chart:text(675, ly + 24 + (#order + 3) * 22, "big dots: hidden under another", {font_size = 12})
 chart:text(675, ly + 24 + (#order + 4) * 22, "axis_sweep, swept: no limit", {font_size = 12})
 chart:write("docs/envelopes.svg")
 print("wrote docs/envelopes.svg")

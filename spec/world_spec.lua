@@ -368,6 +368,7 @@ describe("garbage", function()
     -- LuaJIT's trace compiler allocates in the same heap while it compiles; that is not
     -- budge's garbage, so the JIT is off here (bench/world.lua measures with it on)
     local jit = rawget(_G, "jit")
+    local jit_was_on = jit and jit.status() -- a `luajit -joff` run must stay off
     if jit then jit.off(); jit.flush() end
     for _ = 1, 3 do reset(); for f = 1, 200 do frame(f) end end -- every cell and record exists
     collectgarbage("collect")
@@ -379,7 +380,7 @@ describe("garbage", function()
     for f = 1, 200 do frame(f) end
     local after = collectgarbage("count")
     collectgarbage("restart")
-    if jit then jit.on() end
+    if jit_was_on then jit.on() end
     assert.equal(0, (after - before) * 1024)
   end)
 end)

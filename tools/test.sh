@@ -7,24 +7,7 @@ set -u
 cd "$(dirname "$0")/.." || exit 2
 
 INTERPRETERS="lua5.1 lua5.2 lua5.3 lua5.4 luajit"
-PACKAGES="lua5.1 lua5.2 lua5.3 lua5.4 luajit lua-busted lua-check luarocks"
-
-missing=""
-for tool in $INTERPRETERS busted luacheck luarocks; do
-  command -v "$tool" >/dev/null 2>&1 || missing="$missing $tool"
-done
-if [ -n "$missing" ]; then
-  echo "missing:$missing"
-  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
-    echo "installing: apt-get install -y $PACKAGES"
-    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $PACKAGES) \
-      >/tmp/budge-apt.log 2>&1 || { tail -20 /tmp/budge-apt.log; echo "apt-get failed"; exit 2; }
-  else
-    echo "install them first, as root on Debian:"
-    echo "  apt-get update && apt-get install -y $PACKAGES"
-    exit 2
-  fi
-fi
+sh tools/deps.sh lua5.1 lua5.2 lua5.3 lua5.4 luajit busted luacheck luarocks || exit 2
 
 passed=0
 failed=0
@@ -66,6 +49,7 @@ run_busted() { # label, interpreter and its flags
   record "busted $label" "$ok" "$bad"
 }
 for lua in $INTERPRETERS; do run_busted "$lua" "$lua"; done
+run_busted "luajit -joff" luajit -joff
 
 echo "== rockspec"
 check "luarocks lint" luarocks lint budge-scm-1.rockspec
