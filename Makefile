@@ -21,6 +21,7 @@ bench-world:
 # method on LuaJIT and Lua 5.4 (median of 5 runs), then the charts in docs/.
 bench:
 	@sh tools/deps.sh luajit lua5.4
+	@mkdir -p bench/results docs
 	luajit bench/run.lua --runs 5
 	lua5.4 bench/run.lua --runs 5
 	lua5.4 bench/chart.lua
