@@ -31,6 +31,7 @@ build = {
     ["budge.sweep"] = "src/budge/sweep.lua",
     ["budge.grid"] = "src/budge/grid.lua",
     ["budge.world"] = "src/budge/world.lua",
+    ["budge.tiles"] = "src/budge/tiles.lua",
   },
 }
 test = {

@@ -4,15 +4,9 @@ local budge = require("budge")
 local SEED = 20261124
 local OPERATIONS = 100000
 
--- Park-Miller: the same sequence on every interpreter (math.random is not).
-local function new_random(seed)
-  local state = seed
-  return function(low, high)
-    state = (state * 16807) % 2147483647
-    if low == nil then return state / 2147483647 end
-    return low + state % (high - low + 1)
-  end
-end
+-- Park-Miller, shared with the benches: the same sequence on every interpreter
+-- (math.random is not).
+local new_random = require("bench.common").new_random
 
 local METHODS = {"axis_sweep", "swept", "seed", "wall_type", "min_axis", "fat_cross"}
 local CONTINUOUS = {axis_sweep = true, swept = true}

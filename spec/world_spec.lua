@@ -83,7 +83,7 @@ describe("world:add_solid, add_actor, remove, update, has", function()
 end)
 
 describe("world:add_tiles", function()
-  it("reads grid[row][col], truthy meaning solid, at the layer's origin", function()
+  it("reads grid[row][col], any id but false meaning solid, at the layer's origin", function()
     local world = budge.new_world()
     local layer = world:add_tiles({{false, 7}, {false, false}}, 16, 8, {x = 32, y = 4})
     assert.same({2, 2, 32, 4}, {layer.cols, layer.rows, layer.x, layer.y})
@@ -92,10 +92,9 @@ describe("world:add_tiles", function()
     assert.same({-4, 1, layer, "floor", 2, 1}, {y, n, hits[1].other, hits[1].side, hits[1].col, hits[1].row})
   end)
 
-  it("uses is_solid and is_oneway when given (0 is truthy in Lua: Tiled needs is_solid)", function()
+  it("takes 0 as empty by default, as Tiled does, and uses is_oneway when given", function()
     local world = budge.new_world()
     world:add_tiles({{0, 3, 5}}, 10, 10, {
-      is_solid = function(id) return id ~= 0 end,
       is_oneway = function(id) return id == 5 end,
     })
     local actor = world:add_actor(box(1, 20, 8, 8))

@@ -12,7 +12,10 @@
 local here = (...):match("^(.*)%.[^%.]+$")
 local sweep = require(here .. ".sweep")
 
+local box = require(here .. ".box")
+
 local floor, ceil = math.floor, math.ceil
+local format, describe = string.format, box.describe
 local stop_forward, stop_backward = sweep.stop_forward, sweep.stop_backward
 
 local grid = {}
@@ -195,8 +198,32 @@ end
 
 grid.EMPTY, grid.SOLID, grid.ONEWAY = 0, 1, 2
 
+---Checks that `rows` is a 2D grid (rows[row][col]) whose rows all have the same length;
+---errors at `level` naming the argument "grid". Returns the number of columns.
+function grid.check_rows(rows, level)
+  if type(rows) ~= "table" then
+    error(format("grid must be a table of rows (grid[row][col]), got %s", describe(rows)),
+      level + 1)
+  end
+  local cols
+  for row = 1, #rows do
+    local line = rows[row]
+    if type(line) ~= "table" then
+      error(format("grid[%d] must be a table (a row of tiles), got %s", row, describe(line)),
+        level + 1)
+    end
+    if cols == nil then
+      cols = #line
+    elseif #line ~= cols then
+      error(format("grid[%d] has %d tiles but grid[1] has %d: every row must have the same "
+        .. "length", row, #line, cols), level + 1)
+    end
+  end
+  return cols or 0
+end
+
 ---Flattens `rows` (rows[row][col]) into a tile layer. The caller has validated it.
----`is_solid(id)` and `is_oneway(id)` default to "truthy" and "never".
+---`is_solid(id)` and `is_oneway(id)` default to "any id but nil, false and 0" and "never".
 function grid.new_tiles(rows, tile_width, tile_height, x, y, is_solid, is_oneway)
   local layer = {
     x = x, y = y, tile_width = tile_width, tile_height = tile_height,
@@ -223,7 +250,7 @@ function grid.read_tiles(layer)
         kind = grid.ONEWAY
       elseif is_solid then
         if id ~= nil and is_solid(id) then kind = grid.SOLID end
-      elseif id then
+      elseif id and id ~= 0 then
         kind = grid.SOLID
       end
       kinds[base + col] = kind

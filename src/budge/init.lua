@@ -9,6 +9,7 @@ local box = require(here .. ".box")
 local resolve = require(here .. ".resolve")
 local fatcross = require(here .. ".fatcross")
 local world = require(here .. ".world")
+local tiles = require(here .. ".tiles")
 
 local budge = {
   _VERSION = "0.1.0",
@@ -22,5 +23,6 @@ budge.resolve_collision = resolve.resolve_collision -- resolve.lua
 budge.fat_cross = fatcross.fat_cross              -- fatcross.lua
 budge.resolve_fat_cross = fatcross.resolve_fat_cross
 budge.new_world = world.new_world                -- world.lua
+budge.tiles = {merge = tiles.merge}              -- tiles.lua
 
 return budge

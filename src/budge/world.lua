@@ -145,22 +145,7 @@ function World:add_actor(actor)
 end
 
 local function check_layer_input(rows, tile_width, tile_height, opts)
-  if type(rows) ~= "table" then
-    error(format("grid must be a table of rows (grid[row][col]), got %s", describe(rows)), 3)
-  end
-  local cols
-  for row = 1, #rows do
-    local line = rows[row]
-    if type(line) ~= "table" then
-      error(format("grid[%d] must be a table (a row of tiles), got %s", row, describe(line)), 3)
-    end
-    if cols == nil then
-      cols = #line
-    elseif #line ~= cols then
-      error(format("grid[%d] has %d tiles but grid[1] has %d: every row must have the same "
-        .. "length", row, #line, cols), 3)
-    end
-  end
+  grid.check_rows(rows, 3)
   if not is_finite(tile_width) or tile_width <= 0 then
     error(format("tile_width must be a finite number > 0, got %s", describe(tile_width)), 3)
   end
@@ -184,11 +169,11 @@ local function check_layer_input(rows, tile_width, tile_height, opts)
   return opts
 end
 
----Adds a tile layer: `grid[row][col]` is a tile id; a truthy id (or one for which
----`opts.is_solid(id)` is true) is solid, and one for which `opts.is_oneway(id)` is true
----is a oneway platform. Tile (col, row) covers x + (col-1)*tile_width onward. The grid
----is read now; call world:update(handle) after changing it. Note that 0 is truthy in
----Lua: for Tiled data pass `is_solid = function(id) return id ~= 0 end`.
+---Adds a tile layer: `grid[row][col]` is a tile id; any id but nil, false and 0 (or,
+---when given, one for which `opts.is_solid(id)` is true) is solid, and one for which
+---`opts.is_oneway(id)` is true is a oneway platform. Tile (col, row) covers
+---x + (col-1)*tile_width onward. The grid is read now; call world:update(handle) after
+---changing it. 0 is empty by default because Tiled and most tile maps use it so.
 ---@param rows table grid[row][col]
 ---@param tile_width number
 ---@param tile_height number
