@@ -28,6 +28,15 @@ local format, error, type = string.format, error, type
 
 local tiles = {}
 
+---@class budge.MergeOptions
+---@field width? integer tiles per row, for a flat grid
+---@field x? number where the grid's top-left corner is (default 0)
+---@field y? number
+---@field is_solid? fun(id): boolean which ids are solid (default: any but nil, false, 0)
+---@field is_oneway? fun(id): boolean which ids are oneway platforms (default: none)
+---@field max_speed? number the movers' largest step, to size fat crosses
+---@field open_edges? boolean the map's edges count as open faces (default false)
+
 -- The default, as in world:add_tiles: any id but nil, false and 0 is solid.
 local function default_solid(id) return id ~= nil and id ~= false and id ~= 0 end
 
@@ -162,7 +171,7 @@ end
 ---@param source table
 ---@param tile_width number > 0
 ---@param tile_height number > 0
----@param opts? {width?: integer, x?: number, y?: number, is_solid?: fun(id): boolean, is_oneway?: fun(id): boolean, max_speed?: number, open_edges?: boolean}
+---@param opts? budge.MergeOptions
 ---@return budge.Box[] boxes
 function tiles.merge(source, tile_width, tile_height, opts)
   if opts ~= nil and type(opts) ~= "table" then
