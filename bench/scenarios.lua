@@ -10,7 +10,7 @@ local budge = require("budge")
 
 local scenarios = {}
 
-scenarios.METHODS = {"seed", "wall_type", "fat_cross", "min_axis", "axis_sweep", "swept"}
+scenarios.METHODS = {"seed", "wall_type", "fat_cross", "min_axis", "axis_sweep", "swept", "auto"}
 scenarios.KINDS = {"tunnelled", "wrong side", "residual overlap", "snagged", "teleported",
   "jitter", "order-dependent"}
 

@@ -8,8 +8,8 @@ local OPERATIONS = 100000
 -- (math.random is not).
 local new_random = require("bench.common").new_random
 
-local METHODS = {"axis_sweep", "swept", "seed", "wall_type", "min_axis", "fat_cross"}
-local CONTINUOUS = {axis_sweep = true, swept = true}
+local METHODS = {"axis_sweep", "swept", "seed", "wall_type", "min_axis", "fat_cross", "auto"}
+local CONTINUOUS = {axis_sweep = true, swept = true, auto = true}
 local TILE = 16
 
 describe("a world under 100000 random operations", function()

@@ -229,6 +229,29 @@ describe("world:move", function()
     assert.same({88, 40}, position(world, actor, 40, 0, "axis_sweep"))
   end)
 
+  it("moves with auto exactly as with axis_sweep, its choice inside a world", function()
+    local function trace(method)
+      local world = budge.new_world()
+      world:add_tiles({{0, 0, 0, 0}, {0, 1, 0, 0}, {1, 1, 1, 1}}, 16, 16)
+      world:add_solid(box(40, 0, 8, 20))
+      local actor = world:add_actor(box(2, 2, 10, 10))
+      local out = {}
+      for i = 1, 40 do
+        local x, y, n = world:move(actor, (i % 7) - 2.5, (i % 5) - 1.75, method)
+        out[#out + 1] = ("%.17g %.17g %d"):format(x, y, n)
+      end
+      -- past a block's corner on the diagonal: swept meets its left face, axis_sweep
+      -- (x first) passes beside it and lands on its top
+      world:add_solid(box(120, -20, 16, 16))
+      local bullet = world:add_actor(box(100, -40, 10, 10))
+      local x, y = world:move(bullet, 25, 30, method)
+      out[#out + 1] = ("%.17g %.17g"):format(x, y)
+      return table.concat(out, "\n")
+    end
+    assert.are.equal(trace("axis_sweep"), trace("auto"))
+    assert.are_not.equal(trace("swept"), trace("auto"))
+  end)
+
   it("rejects bad input at the caller's line and changes nothing", function()
     local world = budge.new_world()
     local solid = world:add_solid(box(0, 100, 64, 16))
@@ -236,7 +259,8 @@ describe("world:move", function()
     assert.has_error(function() world:move(actor, 0 / 0, 0) end, "dx must be a finite number, got nan")
     assert.has_error(function() world:move(actor, 0, -math.huge) end, "dy must be a finite number, got -inf")
     assert.has_error(function() world:move(actor, 1, 1, "teleport") end,
-      'method must be "axis_sweep", "swept", "seed", "wall_type", "min_axis" or "fat_cross", got "teleport"')
+      'method must be "axis_sweep", "swept", "auto", "seed", "wall_type", "min_axis" or "fat_cross", '
+        .. 'got "teleport"')
     assert.has_error(function() world:move(box(0, 0, 1, 1), 1, 1) end,
       "actor must be an actor of this world (add it with world:add_actor), got a table")
     assert.has_error(function() world:move(solid, 1, 1) end,
