@@ -32,6 +32,7 @@ build = {
     ["budge.grid"] = "src/budge/grid.lua",
     ["budge.world"] = "src/budge/world.lua",
     ["budge.tiles"] = "src/budge/tiles.lua",
+    ["budge.advise"] = "src/budge/advise.lua",
   },
 }
 test = {

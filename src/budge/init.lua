@@ -10,6 +10,7 @@ local resolve = require(here .. ".resolve")
 local fatcross = require(here .. ".fatcross")
 local world = require(here .. ".world")
 local tiles = require(here .. ".tiles")
+local advise = require(here .. ".advise")
 
 local budge = {
   _VERSION = "0.1.0",
@@ -24,5 +25,6 @@ budge.fat_cross = fatcross.fat_cross              -- fatcross.lua
 budge.resolve_fat_cross = fatcross.resolve_fat_cross
 budge.new_world = world.new_world                -- world.lua
 budge.tiles = {merge = tiles.merge}              -- tiles.lua
+budge.advise = advise.advise                     -- advise.lua
 
 return budge

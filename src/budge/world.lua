@@ -51,6 +51,11 @@ local METHOD_LIST = '"axis_sweep", "swept", "auto", "seed", "wall_type", "min_ax
 ---Creates an empty world.
 ---@param opts? {cell_size?: number} cell_size: side of a spatial hash cell (default 64)
 ---@return budge.World
+---True when `value` is a world made by budge.new_world.
+function world.is_world(value)
+  return getmetatable(value) == World
+end
+
 function world.new_world(opts)
   if opts ~= nil and type(opts) ~= "table" then
     error(format("opts must be a table or nil, got %s", describe(opts)), 2)
