@@ -130,38 +130,44 @@ end
 --   cols, rows (tiles out), best, touched
 grid.probe = {touch = {}, cols = {}, rows = {}}
 
+-- One record that spans the probe's path across: where it stops the probe, if it does,
+-- and whether that is the best stop so far. Probe fields are read where they are used,
+-- not hoisted into locals: fewer values live across the loop's exits keeps LuaJIT from
+-- aborting the trace ("register coalescing too complex").
+local function consider(probe, record, low, length)
+  local stop
+  if probe.forward then
+    stop = stop_forward(low, probe.pos, probe.edge, probe.reach, probe.size, record.oneway,
+      probe.blocks_oneway)
+  else
+    stop = stop_backward(low + length, probe.pos, probe.edge, probe.reach, record.oneway,
+      probe.blocks_oneway)
+  end
+  if stop == nil then return end
+  local best = probe.best
+  if best ~= nil and (probe.forward and stop > best or not probe.forward and stop < best) then
+    return
+  end
+  local filter = probe.filter
+  if filter ~= nil and not filter(probe.actor, record.item) then return end
+  local touched = probe.touched
+  if stop ~= best then probe.best = stop; touched = 0 end
+  touched = touched + 1
+  probe.touch[touched] = record
+  probe.touched = touched
+end
+
 local function scan_cell(cell, stamp, probe)
-  local pos, edge, reach, size = probe.pos, probe.edge, probe.reach, probe.size
-  local cross, cross_end, is_x, forward = probe.cross, probe.cross_end, probe.is_x,
-    probe.forward
   for i = 1, #cell do
     local record = cell[i]
     if record._stamp ~= stamp then
       record._stamp = stamp
-      local low, length, across, across_size
-      if is_x then
-        low, length, across, across_size = record.x, record.width, record.y, record.height
-      else
-        low, length, across, across_size = record.y, record.height, record.x, record.width
-      end
-      if across < cross_end and cross < across + across_size then
-        local stop
-        if forward then
-          stop = stop_forward(low, pos, edge, reach, size, record.oneway, probe.blocks_oneway)
-        else
-          stop = stop_backward(low + length, pos, edge, reach, record.oneway, probe.blocks_oneway)
+      if probe.is_x then
+        if record.y < probe.cross_end and probe.cross < record.y + record.height then
+          consider(probe, record, record.x, record.width)
         end
-        local best = probe.best
-        if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
-          local filter = probe.filter
-          if filter == nil or filter(probe.actor, record.item) then
-            local touched = probe.touched
-            if stop ~= best then probe.best = stop; touched = 0 end
-            touched = touched + 1
-            probe.touch[touched] = record
-            probe.touched = touched
-          end
-        end
+      elseif record.x < probe.cross_end and probe.cross < record.x + record.width then
+        consider(probe, record, record.y, record.height)
       end
     end
   end
