@@ -328,6 +328,23 @@ local function scan_backward(kinds, stride, cross_stride, first, last, origin, t
   return nil
 end
 
+-- Lists the tiles on line `line` that stop the box into probe.cols and probe.rows
+-- (1-based); returns how many. Its own function so that the caller's values are not
+-- live in this loop (LuaJIT aborts traces whose exits carry too many).
+local function list_line(kinds, base, cross_stride, first, last, oneway_ok, line, is_x, probe)
+  local out_cols, out_rows = probe.cols, probe.rows
+  local found = 0
+  for i = first, last do
+    local kind = kinds[base + i * cross_stride]
+    if kind == SOLID or (kind == ONEWAY and oneway_ok) then
+      found = found + 1
+      if is_x then out_cols[found], out_rows[found] = line + 1, i + 1
+      else out_cols[found], out_rows[found] = i + 1, line + 1 end
+    end
+  end
+  return found
+end
+
 ---Nearest tile face the probe's box meets in the layer. Returns the face coordinate
 ---and how many tiles lie on it (their 1-based col and row written to probe.cols and
 ---probe.rows), or nil, 0. A face inside the box (the box overlaps a solid tile) counts
@@ -361,18 +378,8 @@ function grid.tile_face(layer, probe)
       origin, tile, from, pos, edge, probe.reach, probe.blocks_oneway)
   end
   if line == nil then return nil, 0 end
-  local kinds, out_cols, out_rows = layer.kinds, probe.cols, probe.rows
-  local found = 0
-  local base = line * stride + 1
-  for i = first, last do
-    local kind = kinds[base + i * cross_stride]
-    if kind == SOLID or (kind == ONEWAY and oneway_ok) then
-      found = found + 1
-      if is_x then out_cols[found], out_rows[found] = line + 1, i + 1
-      else out_cols[found], out_rows[found] = i + 1, line + 1 end
-    end
-  end
-  return face, found
+  return face, list_line(layer.kinds, line * stride + 1, cross_stride, first, last, oneway_ok,
+    line, is_x, probe)
 end
 
 ---Appends to the candidate set every non-empty tile that overlaps the rectangle
