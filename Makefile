@@ -1,5 +1,5 @@
 # budge: `make test` checks everything CI checks; `make bench` measures.
-.PHONY: test lint spec bench bench-world
+.PHONY: test lint spec bench bench-world demo screenshots
 
 test:
 	@sh tools/test.sh
@@ -25,3 +25,20 @@ bench:
 	luajit bench/run.lua --runs 5
 	lua5.4 bench/run.lua --runs 5
 	lua5.4 bench/chart.lua
+
+# The LÖVE lab. Installs LÖVE when missing; without a display it says how to run the
+# scripted mode instead.
+demo:
+	@sh tools/deps.sh love
+	@if [ -z "$${DISPLAY:-}$${WAYLAND_DISPLAY:-}" ]; then \
+	  echo "no display here: the lab needs a window. Its scripted mode runs anywhere:"; \
+	  echo "  xvfb-run -a -s '-screen 0 1024x768x24' love examples/demo --scene speed --method seed --frames 240 --screenshot lab.png"; \
+	  echo "(make test runs every scene that way)"; \
+	else love examples/demo; fi
+
+# The README's pictures of the lab, from its scripted mode.
+screenshots:
+	@sh tools/deps.sh love xvfb-run
+	xvfb-run -a -s "-screen 0 1024x768x24" love examples/demo --scene speed --method seed --frames 240 --screenshot docs/demo.png
+	xvfb-run -a -s "-screen 0 1024x768x24" love examples/demo --scene fatcross --method fat_cross --frames 100 --screenshot docs/demo-fatcross.png
+	xvfb-run -a -s "-screen 0 1024x768x24" love examples/demo --scene platformer --method fat_cross --frames 300 --screenshot docs/demo-platformer.png

@@ -51,6 +51,18 @@ run_busted() { # label, interpreter and its flags
 for lua in $INTERPRETERS; do run_busted "$lua" "$lua"; done
 run_busted "luajit -joff" luajit -joff
 
+echo "== the LÖVE lab, scripted (every scene under every method)"
+demo_out=$(mktemp -d)
+sh tools/demo.sh "$demo_out" | tee /tmp/budge-demo.log | grep -v '^PASS'
+line=$(grep -E '^demo: [0-9]+ passed, [0-9]+ failed' /tmp/budge-demo.log | tail -n 1)
+if [ -n "$line" ]; then
+  record "lab scripted runs" "$(echo "$line" | sed -E 's/demo: ([0-9]+) passed.*/\1/')" \
+    "$(echo "$line" | sed -E 's/.* ([0-9]+) failed/\1/')"
+else
+  record "lab scripted runs" 0 1
+fi
+rm -rf "$demo_out"
+
 echo "== rockspec"
 check "luarocks lint" luarocks lint budge-scm-1.rockspec
 tree=$(mktemp -d)

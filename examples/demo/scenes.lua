@@ -406,8 +406,7 @@ scenes[5] = {
     end
   end,
   verdict = function(_, lab)
-    if Lab.CONTINUOUS[lab.method] then return continuous_clean(lab) end
-    return true, "ran; failures: " .. lab:summary()
+    return expect_failures(lab, "diagonal movers snag on tile corners")
   end,
 }
 

@@ -1,0 +1,33 @@
+#!/bin/sh
+# tools/demo.sh [OUT_DIR]: runs every scene of the LÖVE lab (examples/demo) under every
+# method in scripted mode, under a virtual X display, and checks each run's verdict
+# (its exit status) and that its screenshot is a real picture (tools/png_check.py).
+# Ends with "demo: N passed, N failed". Installs love, xvfb and python3 when missing.
+set -u
+cd "$(dirname "$0")/.." || exit 2
+out=${1:-/tmp/budge-demo}
+FRAMES=180
+if [ -z "${BUDGE_IN_XVFB:-}" ]; then
+  sh tools/deps.sh love xvfb-run python3 || exit 2
+  mkdir -p "$out"
+  BUDGE_IN_XVFB=1 exec xvfb-run -a -s "-screen 0 1024x768x24" sh tools/demo.sh "$out"
+fi
+passed=0
+failed=0
+for scene in platformer corners speed fatcross crowd; do
+  for method in seed wall_type fat_cross min_axis axis_sweep swept auto; do
+    png="$out/$scene-$method.png"
+    rm -f "$png"
+    if timeout 60 love examples/demo --scene "$scene" --method "$method" --frames "$FRAMES" \
+        --screenshot "$png" 2>"$out/stderr.log" \
+        && python3 tools/png_check.py "$png" >"$out/check.log"; then
+      passed=$((passed + 1))
+    else
+      grep -v XDG_RUNTIME_DIR "$out/stderr.log"; cat "$out/check.log" 2>/dev/null
+      echo "FAILED: scene $scene, method $method"
+      failed=$((failed + 1))
+    fi
+  done
+done
+echo "demo: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
