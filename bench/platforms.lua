@@ -9,21 +9,14 @@
 package.path = "./src/?.lua;./src/?/init.lua;./?.lua;" .. package.path
 local budge = require("budge")
 local common = require("bench.common")
+local scene = require("bench.scene")
 
 local MAP, TILE = 200, 16
 local options = common.options(arg, {platforms = 100, actors = 1000, frames = 600, runs = 3,
   seed = 4242})
 
 local function build()
-  local random = common.new_random(options.seed)
-  local grid = {}
-  for row = 1, MAP do
-    local line = {}
-    for col = 1, MAP do
-      line[col] = row == 1 or row == MAP or col == 1 or col == MAP or random() < 0.2
-    end
-    grid[row] = line
-  end
+  local grid, random = scene.make_scene(options.seed)
   local world = budge.new_world()
   world:add_tiles(grid, TILE, TILE)
   local platforms, actors = {}, {}

@@ -109,6 +109,15 @@ local function each(grid, fn)
   end
 end
 
+-- One case per speed, thickness and size of the grid.
+local function grid_cases(grid)
+  local list = {}
+  each(grid, function(speed, thickness, size)
+    list[#list + 1] = {speed = speed, thickness = thickness, size = size}
+  end)
+  return list
+end
+
 scenarios.SCENES = {
   {
     name = "thin wall, each side",
@@ -127,13 +136,7 @@ scenarios.SCENES = {
   {
     name = "horizontal wall hit from the side",
     about = "a slab typed horizontal, met end-on",
-    cases = function(grid)
-      local list = {}
-      each(grid, function(speed, thickness, size)
-        list[#list + 1] = {speed = speed, thickness = thickness, size = size}
-      end)
-      return list
-    end,
+    cases = grid_cases,
     run = function(method, p, schedule)
       local S, T = p.size, p.thickness
       local slab = box(200, 100, 64, T, "horizontal")
@@ -155,13 +158,7 @@ scenarios.SCENES = {
   {
     name = "vertical wall landed on",
     about = "a pillar typed vertical, met from above",
-    cases = function(grid)
-      local list = {}
-      each(grid, function(speed, thickness, size)
-        list[#list + 1] = {speed = speed, thickness = thickness, size = size}
-      end)
-      return list
-    end,
+    cases = grid_cases,
     run = function(method, p, schedule)
       local S, T = p.size, p.thickness
       local pillar = box(100, 200, T, 64, "vertical")
@@ -324,13 +321,7 @@ scenarios.SCENES = {
   {
     name = "resting",
     about = "resting on a floor under gravity, without jitter",
-    cases = function(grid)
-      local list = {}
-      each(grid, function(speed, thickness, size)
-        list[#list + 1] = {speed = speed, thickness = thickness, size = size}
-      end)
-      return list
-    end,
+    cases = grid_cases,
     run = function(method, p, schedule)
       local S, T = p.size, p.thickness
       local floor = box(0, 100.5, 200, T)
@@ -416,13 +407,7 @@ scenarios.SCENES = {
     name = "oneway from below",
     about = "jumping up through a oneway platform, then landing on it",
     long = true, -- needs travel: not replayed with 1e-5 s steps
-    cases = function(grid)
-      local list = {}
-      each(grid, function(speed, thickness, size)
-        list[#list + 1] = {speed = speed, thickness = thickness, size = size}
-      end)
-      return list
-    end,
+    cases = grid_cases,
     run = function(method, p, schedule)
       local S, T = p.size, p.thickness
       local platform = box(0, 100, 200, T, "oneway")
@@ -451,13 +436,7 @@ scenarios.SCENES = {
     name = "riding a moving platform",
     about = "standing on a platform that moves up, down and sideways",
     long = true,
-    cases = function(grid)
-      local list = {}
-      each(grid, function(speed, thickness, size)
-        list[#list + 1] = {speed = speed, thickness = thickness, size = size}
-      end)
-      return list
-    end,
+    cases = grid_cases,
     run = function(method, p, schedule)
       local S, T = p.size, p.thickness
       local platform = box(0, 300, 64, T)
