@@ -118,6 +118,15 @@ local function grid_cases(grid)
   return list
 end
 
+-- One case per speed and size: for scenes whose walls do not vary.
+local function speed_size_cases(grid)
+  local list = {}
+  for _, speed in ipairs(grid.speeds) do
+    for _, size in ipairs(grid.sizes) do list[#list + 1] = {speed = speed, size = size} end
+  end
+  return list
+end
+
 scenarios.SCENES = {
   {
     name = "thin wall, each side",
@@ -344,13 +353,7 @@ scenarios.SCENES = {
   {
     name = "squeezed",
     about = "an actor put 2 px into the right of two walls whose gap is 2 px too narrow",
-    cases = function(grid)
-      local list = {}
-      for _, speed in ipairs(grid.speeds) do
-        for _, size in ipairs(grid.sizes) do list[#list + 1] = {speed = speed, size = size} end
-      end
-      return list
-    end,
+    cases = speed_size_cases,
     run = function(method, p, schedule)
       local S = p.size
       local left, right = box(0, 0, 100, 200), box(100 + S - 2, 0, 100, 200)
@@ -372,13 +375,7 @@ scenarios.SCENES = {
   {
     name = "order of solids",
     about = "the same scene with its solids added in reverse order must end the same",
-    cases = function(grid)
-      local list = {}
-      for _, speed in ipairs(grid.speeds) do
-        for _, size in ipairs(grid.sizes) do list[#list + 1] = {speed = speed, size = size} end
-      end
-      return list
-    end,
+    cases = speed_size_cases,
     run = function(method, p, schedule)
       local function play(reverse)
         local solids = {}
