@@ -86,6 +86,8 @@ function world.new_world(opts)
     _wide = {x = 0, y = 0, width = 0, height = 0, wall_type = "vertical"},
     -- bounds of everything solid ever added: long moves only look inside them
     _min_x = HUGE, _min_y = HUGE, _max_x = -HUGE, _max_y = -HUGE,
+    -- and of the hashed solid boxes alone: a move outside them skips the hash
+    _box_min_x = HUGE, _box_min_y = HUGE, _box_max_x = -HUGE, _box_max_y = -HUGE,
   }, World)
 end
 
@@ -120,6 +122,11 @@ local function hash_solid(self, record)
   record.x, record.y, record.width, record.height = item.x, item.y, item.width, item.height
   self._solids:insert(record, item.x, item.y, item.width, item.height)
   grow_bounds(self, item.x, item.y, item.width, item.height)
+  local x, y, x1, y1 = item.x, item.y, item.x + item.width, item.y + item.height
+  if x < self._box_min_x then self._box_min_x = x end
+  if y < self._box_min_y then self._box_min_y = y end
+  if x1 > self._box_max_x then self._box_max_x = x1 end
+  if y1 > self._box_max_y then self._box_max_y = y1 end
 end
 
 ---Adds a solid box: actors stop against it. `wall_type = "oneway"` makes it block
@@ -310,10 +317,10 @@ local function gather_boxes(self, actor, filter, x, y, width, height)
   local set = self._set
   set.n = 0
   local x1, y1 = x + width, y + height
-  if x < self._min_x then x = self._min_x end
-  if y < self._min_y then y = self._min_y end
-  if x1 > self._max_x then x1 = self._max_x end
-  if y1 > self._max_y then y1 = self._max_y end
+  if x < self._box_min_x then x = self._box_min_x end
+  if y < self._box_min_y then y = self._box_min_y end
+  if x1 > self._box_max_x then x1 = self._box_max_x end
+  if y1 > self._box_max_y then y1 = self._box_max_y end
   if x1 < x or y1 < y or self._solid_count == 0 then return set end
   local found = self._found
   local count = self._solids:collect(x, y, x1 - x, y1 - y, next_stamp(), found, 0)
@@ -355,8 +362,8 @@ local SIDES_Y = {[true] = "floor", [false] = "ceiling"}
 
 local probe = grid.probe
 
--- The hash part of an axis phase: the swept rectangle, clipped to the bounds of
--- everything solid, scanned with the probe.
+-- The hash part of an axis phase: the swept rectangle, clipped to the bounds of the
+-- hashed solids, scanned with the probe.
 local function hash_phase(self, is_x, pos, cross, size, cross_size, delta)
   local reach = delta < 0 and -delta or delta
   local x, y, x1, y1
@@ -367,10 +374,10 @@ local function hash_phase(self, is_x, pos, cross, size, cross_size, delta)
     y = delta > 0 and pos or pos + delta
     y1, x, x1 = y + size + reach, cross, cross + cross_size
   end
-  if x < self._min_x then x = self._min_x end
-  if y < self._min_y then y = self._min_y end
-  if x1 > self._max_x then x1 = self._max_x end
-  if y1 > self._max_y then y1 = self._max_y end
+  if x < self._box_min_x then x = self._box_min_x end
+  if y < self._box_min_y then y = self._box_min_y end
+  if x1 > self._box_max_x then x1 = self._box_max_x end
+  if y1 > self._box_max_y then y1 = self._box_max_y end
   if x <= x1 and y <= y1 then
     local cx0, cy0, cx1, cy1 = self._solids:cells_of(x, y, x1 - x, y1 - y)
     self._solids:axis_stop(cx0, cy0, cx1, cy1, next_stamp(), probe)
@@ -865,9 +872,10 @@ local function collect_boxes(self, x, y, width, height)
   local n = 0
   local x1, y1 = x + width, y + height
   local cx, cy = x, y
-  if cx < self._min_x then cx = self._min_x end
-  if cy < self._min_y then cy = self._min_y end
-  local cx1, cy1 = x1 < self._max_x and x1 or self._max_x, y1 < self._max_y and y1 or self._max_y
+  if cx < self._box_min_x then cx = self._box_min_x end
+  if cy < self._box_min_y then cy = self._box_min_y end
+  local cx1 = x1 < self._box_max_x and x1 or self._box_max_x
+  local cy1 = y1 < self._box_max_y and y1 or self._box_max_y
   if self._solid_count > 0 and cx <= cx1 and cy <= cy1 then
     n = self._solids:collect(cx, cy, cx1 - cx, cy1 - cy, stamp, found, n)
   end
