@@ -1,5 +1,5 @@
 # budge: `make test` checks everything CI checks; `make bench` measures.
-.PHONY: test lint spec bench bench-world demo screenshots
+.PHONY: test lint spec bench bench-world bench-jit demo screenshots
 
 test:
 	@sh tools/test.sh
@@ -42,3 +42,8 @@ screenshots:
 	xvfb-run -a -s "-screen 0 1024x768x24" love examples/demo --scene speed --method seed --frames 240 --screenshot docs/demo.png
 	xvfb-run -a -s "-screen 0 1024x768x24" love examples/demo --scene fatcross --method fat_cross --frames 100 --screenshot docs/demo-fatcross.png
 	xvfb-run -a -s "-screen 0 1024x768x24" love examples/demo --scene platformer --method fat_cross --frames 300 --screenshot docs/demo-platformer.png
+
+# How much machine code budge makes LuaJIT compile, against its default budget.
+bench-jit:
+	@sh tools/deps.sh luajit
+	luajit bench/jit.lua --frames 3000 --why 8
