@@ -29,5 +29,16 @@ for scene in platformer corners speed fatcross crowd; do
     fi
   done
 done
+# the interactive keys, pressed by the script: methods, scenes, restart, help
+png="$out/keys.png"
+if timeout 60 love examples/demo --scene 1 --method seed --keys "20:m,40:m,60:3,80:tab,100:r,120:h,140:5" \
+    --frames 220 --screenshot "$png" 2>"$out/stderr.log" \
+    && python3 tools/png_check.py "$png" >"$out/check.log"; then
+  passed=$((passed + 1))
+else
+  grep -v XDG_RUNTIME_DIR "$out/stderr.log"; cat "$out/check.log" 2>/dev/null
+  echo "FAILED: the scripted key presses"
+  failed=$((failed + 1))
+fi
 echo "demo: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -5,6 +5,8 @@
 --   love examples/demo --scene speed --method seed --frames 240 --screenshot out.png
 --                                           scripted: fixed dt, scripted input, a PNG,
 --                                           a one-line verdict, exit 1 on a wrong outcome
+--   ... --keys 20:m,60:3                    presses keys at those frames (the verdict
+--                                           is the last scene's, under the last method)
 --
 -- The library is loaded from the repository's src/, never copied here.
 local source = love.filesystem.getSource()
@@ -31,7 +33,8 @@ local options = {scene = "1", method = "axis_sweep"}
 local scripted = false
 local current = {scene = 1, method = "axis_sweep"}
 local lab, state
-local frame = 0
+local frame = 0 -- frames since the scene (re)started
+local total_frames = 0 -- frames since the lab started
 local show_help = true
 local input = {left = false, right = false, jump = false}
 local fonts = {}
@@ -45,13 +48,18 @@ local function parse_args(args)
   local i = 1
   while i <= #args do
     local key, value = args[i], args[i + 1]
-    if key == "--scene" or key == "--method" or key == "--frames" or key == "--screenshot" then
+    if key == "--scene" or key == "--method" or key == "--frames" or key == "--screenshot"
+        or key == "--keys" then
       if value == nil then fail_fast(key .. " needs a value") end
       options[key:sub(3)] = value
       i = i + 2
     else
       i = i + 1 -- LÖVE's own arguments
     end
+  end
+  options.presses = {}
+  for at, key in (options.keys or ""):gmatch("(%d+):([%w]+)") do
+    options.presses[#options.presses + 1] = {frame = tonumber(at), key = key}
   end
   if options.frames then
     scripted = true
@@ -97,6 +105,10 @@ local WARMUP_FRAMES = 30
 
 local function step()
   frame = frame + 1
+  total_frames = total_frames + 1
+  for _, press in ipairs(options.presses) do -- scripted key presses (--keys 20:m,40:3)
+    if press.frame == total_frames then love.keypressed(press.key) end
+  end
   lab.timing = frame > WARMUP_FRAMES
   scenes[current.scene].update(state, lab, input, scripted)
   lab:tick()
@@ -106,7 +118,7 @@ end
 local accumulator = 0
 function love.update(dt)
   if scripted then
-    if frame < options.frames then step() end
+    if total_frames < options.frames then step() end
     return
   end
   accumulator = math.min(accumulator + dt, 0.25)
@@ -212,7 +224,7 @@ function love.draw()
   draw_marks(gfx, view[3])
   gfx.pop()
   draw_hud(gfx)
-  if scripted and frame >= options.frames and not finishing then
+  if scripted and total_frames >= options.frames and not finishing then
     finishing = true
     finish()
   end
