@@ -14,31 +14,26 @@ if [ -z "${BUDGE_IN_XVFB:-}" ]; then
 fi
 passed=0
 failed=0
+# run NAME ARGS...: one scripted run; passes when it exits 0 and its PNG is a picture
+run() {
+  name=$1; shift
+  png="$out/$name.png"
+  rm -f "$png"
+  if timeout 60 love examples/demo "$@" --screenshot "$png" 2>"$out/stderr.log" \
+      && python3 tools/png_check.py "$png" >"$out/check.log"; then
+    passed=$((passed + 1))
+  else
+    grep -v XDG_RUNTIME_DIR "$out/stderr.log"; cat "$out/check.log" 2>/dev/null
+    echo "FAILED: $name"
+    failed=$((failed + 1))
+  fi
+}
 for scene in platformer corners speed fatcross crowd; do
   for method in seed wall_type fat_cross min_axis axis_sweep swept auto; do
-    png="$out/$scene-$method.png"
-    rm -f "$png"
-    if timeout 60 love examples/demo --scene "$scene" --method "$method" --frames "$FRAMES" \
-        --screenshot "$png" 2>"$out/stderr.log" \
-        && python3 tools/png_check.py "$png" >"$out/check.log"; then
-      passed=$((passed + 1))
-    else
-      grep -v XDG_RUNTIME_DIR "$out/stderr.log"; cat "$out/check.log" 2>/dev/null
-      echo "FAILED: scene $scene, method $method"
-      failed=$((failed + 1))
-    fi
+    run "$scene-$method" --scene "$scene" --method "$method" --frames "$FRAMES"
   done
 done
 # the interactive keys, pressed by the script: methods, scenes, restart, help
-png="$out/keys.png"
-if timeout 60 love examples/demo --scene 1 --method seed --keys "20:m,40:m,60:3,80:tab,100:r,120:h,140:5" \
-    --frames 220 --screenshot "$png" 2>"$out/stderr.log" \
-    && python3 tools/png_check.py "$png" >"$out/check.log"; then
-  passed=$((passed + 1))
-else
-  grep -v XDG_RUNTIME_DIR "$out/stderr.log"; cat "$out/check.log" 2>/dev/null
-  echo "FAILED: the scripted key presses"
-  failed=$((failed + 1))
-fi
+run keys --scene 1 --method seed --keys "20:m,40:m,60:3,80:tab,100:r,120:h,140:5" --frames 220
 echo "demo: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

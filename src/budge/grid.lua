@@ -204,6 +204,38 @@ end
 
 grid.EMPTY, grid.SOLID, grid.ONEWAY = 0, 1, 2
 
+---Checks the options a tile layer shares wherever it is read (world:add_tiles and
+---budge.tiles.merge): tile sizes > 0, opts a table or nil, opts.x and opts.y finite,
+---opts.is_solid and opts.is_oneway functions. Errors at `level` (1 = the caller of the
+---function that calls this). Returns opts, or a new empty table.
+function grid.check_layer_options(tile_width, tile_height, opts, level)
+  if not box.is_finite(tile_width) or tile_width <= 0 then
+    error(format("tile_width must be a finite number > 0, got %s", describe(tile_width)),
+      level + 1)
+  end
+  if not box.is_finite(tile_height) or tile_height <= 0 then
+    error(format("tile_height must be a finite number > 0, got %s", describe(tile_height)),
+      level + 1)
+  end
+  if opts ~= nil and type(opts) ~= "table" then
+    error(format("opts must be a table or nil, got %s", describe(opts)), level + 1)
+  end
+  opts = opts or {}
+  for _, field in ipairs({"x", "y"}) do
+    if opts[field] ~= nil and not box.is_finite(opts[field]) then
+      error(format("opts.%s must be a finite number, got %s", field, describe(opts[field])),
+        level + 1)
+    end
+  end
+  for _, field in ipairs({"is_solid", "is_oneway"}) do
+    if opts[field] ~= nil and type(opts[field]) ~= "function" then
+      error(format("opts.%s must be a function or nil, got %s", field, describe(opts[field])),
+        level + 1)
+    end
+  end
+  return opts
+end
+
 ---Checks that `rows` is a 2D grid (rows[row][col]) whose rows all have the same length;
 ---errors at `level` naming the argument "grid". Returns the number of columns.
 function grid.check_rows(rows, level)

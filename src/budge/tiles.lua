@@ -174,26 +174,7 @@ end
 ---@param opts? budge.MergeOptions
 ---@return budge.Box[] boxes
 function tiles.merge(source, tile_width, tile_height, opts)
-  if opts ~= nil and type(opts) ~= "table" then
-    error(format("opts must be a table or nil, got %s", describe(opts)), 2)
-  end
-  opts = opts or {}
-  if not is_finite(tile_width) or tile_width <= 0 then
-    error(format("tile_width must be a finite number > 0, got %s", describe(tile_width)), 2)
-  end
-  if not is_finite(tile_height) or tile_height <= 0 then
-    error(format("tile_height must be a finite number > 0, got %s", describe(tile_height)), 2)
-  end
-  for _, field in ipairs({"x", "y"}) do
-    if opts[field] ~= nil and not is_finite(opts[field]) then
-      error(format("opts.%s must be a finite number, got %s", field, describe(opts[field])), 2)
-    end
-  end
-  for _, field in ipairs({"is_solid", "is_oneway"}) do
-    if opts[field] ~= nil and type(opts[field]) ~= "function" then
-      error(format("opts.%s must be a function or nil, got %s", field, describe(opts[field])), 2)
-    end
-  end
+  opts = grid.check_layer_options(tile_width, tile_height, opts, 2)
   local max_speed = opts.max_speed
   if max_speed ~= nil and (not is_finite(max_speed) or max_speed <= 0) then
     error(format("opts.max_speed must be a finite number > 0 or nil, got %s",

@@ -159,27 +159,8 @@ end
 
 local function check_layer_input(rows, tile_width, tile_height, opts)
   grid.check_rows(rows, 3)
-  if not is_finite(tile_width) or tile_width <= 0 then
-    error(format("tile_width must be a finite number > 0, got %s", describe(tile_width)), 3)
-  end
-  if not is_finite(tile_height) or tile_height <= 0 then
-    error(format("tile_height must be a finite number > 0, got %s", describe(tile_height)), 3)
-  end
-  if opts ~= nil and type(opts) ~= "table" then
-    error(format("opts must be a table or nil, got %s", describe(opts)), 3)
-  end
-  opts = opts or {}
-  for _, field in ipairs({"x", "y"}) do
-    if opts[field] ~= nil and not is_finite(opts[field]) then
-      error(format("opts.%s must be a finite number, got %s", field, describe(opts[field])), 3)
-    end
-  end
-  for _, field in ipairs({"is_solid", "is_oneway"}) do
-    if opts[field] ~= nil and type(opts[field]) ~= "function" then
-      error(format("opts.%s must be a function or nil, got %s", field, describe(opts[field])), 3)
-    end
-  end
-  return opts
+  local checked = grid.check_layer_options(tile_width, tile_height, opts, 3)
+  return checked -- not a tail call: the error level counts this function's frame
 end
 
 ---Adds a tile layer: `grid[row][col]` is a tile id; any id but nil, false and 0 (or,
