@@ -126,6 +126,20 @@ describe("budge.advise", function()
       .. "the oneway platform at (0, 100) (it needs less than 16)", reasons[1])
   end)
 
+  it("handles the 5586 merged boxes of the bench map, each face against its neighbours", function()
+    local map = require("bench.scene").make_scene(12345)
+    local merged = budge.tiles.merge(map, 16, 16, {max_speed = 6})
+    local method, reasons = budge.advise({solids = merged,
+      bounds = {x = 0, y = 0, width = 3200, height = 3200},
+      movers = {{width = 12, height = 12, max_speed = 6}}})
+    assert.are.equal("fat_cross", method)
+    assert.are.same({"wall_type is not enough: the 32x16 block at (0, 16) is hit from the side "
+      .. "and from below, and no wall_type is right for both (and 5542 more)",
+      "fat_cross is enough: the fastest mover moves 6 px per step and every crossed block has "
+      .. "an inset of at least 6 (a mover may overlap a crossed block's corner by up to the "
+      .. "inset for a step: the corner notches)"}, reasons)
+  end)
+
   it("answers axis_sweep for a world, where it is measured cheapest, as auto does", function()
     local method, reasons = budge.advise({world = budge.new_world(),
       movers = {{width = 12, height = 12, max_speed = 1}}})

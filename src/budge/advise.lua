@@ -20,11 +20,12 @@
 -- A face is open when the other solids do not cover all of it and it looks into
 -- `scene.bounds` (the area the movers stay in, when given). Inside a world the answer
 -- is always axis_sweep: `make bench` measures it cheaper than every discrete method there.
--- Meant for setup time: the face test compares every pair of solids.
+-- Meant for setup time: faces are checked against their neighbours in a spatial hash.
 
 local here = (...):match("^(.*)%.[^%.]+$")
 local box = require(here .. ".box")
 local fatcross = require(here .. ".fatcross")
+local grid = require(here .. ".grid")
 local world_module = require(here .. ".world")
 
 local check_box, check_wall_type = box.check_box, box.check_wall_type
@@ -46,10 +47,37 @@ local function where(solid)
     num(solid.x), num(solid.y))
 end
 
--- How much of one face of `rect` the solids in `others` leave uncovered: returns
+-- The walls in a spatial hash, so that the faces of thousands of merged boxes are
+-- checked against their neighbours only.
+local INDEX_CELL = 64
+
+local function new_index(walls)
+  local index = {hash = grid.new_hash(INDEX_CELL), found = {}}
+  for i = 1, #walls do
+    local wall = walls[i]
+    index.hash:insert({item = wall, order = i, _stamp = 0}, wall.x, wall.y, wall.width,
+      wall.height)
+  end
+  return index
+end
+
+local function by_order(a, b) return a.order < b.order end
+
+-- The walls whose boxes touch the rectangle (edges included), in the order given.
+local function walls_near(index, x, y, width, height)
+  local found = index.found
+  local n = index.hash:collect(x, y, width, height, grid.next_stamp(), found, 0)
+  for i = n + 1, #found do found[i] = nil end
+  sort(found, by_order)
+  local walls = {}
+  for i = 1, n do walls[i] = found[i].item end
+  return walls
+end
+
+-- How much of one face of `rect` the other walls leave uncovered: returns
 -- open_somewhere, open_everywhere. `axis` "x" means the left (side -1) or right (side 1)
 -- face. A face that looks out of `bounds` (the area movers stay in) is closed.
-local function face_open(rect, others, axis, side, bounds)
+local function face_open(rect, index, axis, side, bounds)
   local line, low, high
   local intervals = {}
   if axis == "x" then
@@ -63,6 +91,9 @@ local function face_open(rect, others, axis, side, bounds)
     local edge = bounds[axis .. (side < 0 and "_min" or "_max")]
     if (side < 0 and line <= edge) or (side > 0 and line >= edge) then return false, false end
   end
+  local others
+  if axis == "x" then others = walls_near(index, line, low, 0, high - low)
+  else others = walls_near(index, low, line, high - low, 0) end
   for i = 1, #others do
     local other = others[i]
     local near, far, from, to
@@ -142,7 +173,8 @@ local function check_scene(scene)
 end
 
 -- The faces of each solid that movers can reach: {left, right, top, bottom} booleans.
--- Also returns the walls (the solids but oneway platforms) and the bounds for face_open.
+-- Also returns the walls (the solids but oneway platforms), the bounds for face_open and
+-- the walls' index.
 local function open_faces(solids, area)
   local walls, faces = {}, {}
   local bounds
@@ -153,16 +185,17 @@ local function open_faces(solids, area)
   for i = 1, #solids do
     if solids[i].wall_type ~= "oneway" then walls[#walls + 1] = solids[i] end
   end
+  local index = new_index(walls)
   for i = 1, #walls do
     local solid = walls[i]
     faces[solid] = {
-      left = face_open(solid, walls, "x", -1, bounds),
-      right = face_open(solid, walls, "x", 1, bounds),
-      top = face_open(solid, walls, "y", -1, bounds),
-      bottom = face_open(solid, walls, "y", 1, bounds),
+      left = face_open(solid, index, "x", -1, bounds),
+      right = face_open(solid, index, "x", 1, bounds),
+      top = face_open(solid, index, "y", -1, bounds),
+      bottom = face_open(solid, index, "y", 1, bounds),
     }
   end
-  return walls, faces, bounds
+  return walls, faces, bounds, index
 end
 
 -- How a rung resolves a solid: "oneway", "cross", "horizontal", "vertical" or
@@ -179,27 +212,28 @@ end
 -- True when a mover can slide along the face (`side` -1 left, 1 right) across the
 -- junction of `a` above `b`: the face is open for a pixel (or less, on thin boxes) on
 -- both sides of the junction.
-local function open_across(a, b, side, walls, bounds)
+local function open_across(a, b, side, index, bounds)
   local reach = math.min(1, a.height, b.height)
   local x = side < 0 and a.x or a.x + a.width
   local above = {x = side < 0 and x or x - 1, y = b.y - reach, width = 1, height = reach}
   local below = {x = above.x, y = b.y, width = 1, height = reach}
-  local _, above_open = face_open(above, walls, "x", side, bounds)
-  local _, below_open = face_open(below, walls, "x", side, bounds)
+  local _, above_open = face_open(above, index, "x", side, bounds)
+  local _, below_open = face_open(below, index, "x", side, bounds)
   return above_open and below_open
 end
 
 -- The first seam in a wall: two solids resolved by the shortest way out, one on top of
 -- the other, flush on a vertical face a mover can slide along. Returns the two, or nil.
-local function find_seam(rung, walls, faces, bounds)
+local function find_seam(rung, walls, faces, bounds, index)
   for i = 1, #walls do
     local a = walls[i]
     if treatment(rung, a, faces[a]) == "shortest" then
-      for j = 1, #walls do
-        local b = walls[j]
-        if i ~= j and treatment(rung, b, faces[b]) == "shortest" and b.y == a.y + a.height then
-          if (a.x == b.x and open_across(a, b, -1, walls, bounds))
-            or (a.x + a.width == b.x + b.width and open_across(a, b, 1, walls, bounds)) then
+      local below = walls_near(index, a.x, a.y + a.height, a.width, 0)
+      for j = 1, #below do
+        local b = below[j]
+        if b ~= a and treatment(rung, b, faces[b]) == "shortest" and b.y == a.y + a.height then
+          if (a.x == b.x and open_across(a, b, -1, index, bounds))
+            or (a.x + a.width == b.x + b.width and open_across(a, b, 1, index, bounds)) then
             return a, b
           end
         end
@@ -244,7 +278,7 @@ local function speed_problem(solid, movers, axis)
 end
 
 -- Problems for one rung ("wall_type", "fat_cross" or "min_axis"): a list of sentences.
-local function problems_of(rung, solids, walls, faces, bounds, movers)
+local function problems_of(rung, solids, walls, faces, bounds, index, movers)
   local problems = {}
   local speed = fastest(movers)
   for i = 1, #solids do
@@ -300,7 +334,7 @@ local function problems_of(rung, solids, walls, faces, bounds, movers)
     end
     if problem then problems[#problems + 1] = problem end
   end
-  local a, b = find_seam(rung, walls, faces, bounds)
+  local a, b = find_seam(rung, walls, faces, bounds, index)
   if a then
     problems[#problems + 1] = format("%s and %s make a seam in a wall: the shortest way out "
       .. "drags a mover sliding down it a pixel further at the seam", where(a),
@@ -341,10 +375,10 @@ function advise.advise(scene)
     return "axis_sweep", reasons
   end
   local solids = scene.solids
-  local walls, faces, bounds = open_faces(solids, scene.bounds)
+  local walls, faces, bounds, index = open_faces(solids, scene.bounds)
   local speed = fastest(movers)
   for _, rung in ipairs(LADDER) do
-    local problems = problems_of(rung, solids, walls, faces, bounds, movers)
+    local problems = problems_of(rung, solids, walls, faces, bounds, index, movers)
     if #problems == 0 then
       reasons[#reasons + 1] = format(ENOUGH[rung], num(speed), num(speed))
       return rung, reasons
