@@ -39,9 +39,9 @@ demo:
 # The README's pictures of the lab, from its scripted mode.
 screenshots:
 	@sh tools/deps.sh love xvfb-run
-	xvfb-run -a -s "-screen 0 1024x768x24" love examples/demo --scene speed --method seed --frames 240 --screenshot docs/demo.png
-	xvfb-run -a -s "-screen 0 1024x768x24" love examples/demo --scene fatcross --method fat_cross --frames 100 --screenshot docs/demo-fatcross.png
-	xvfb-run -a -s "-screen 0 1024x768x24" love examples/demo --scene platformer --method fat_cross --frames 300 --screenshot docs/demo-platformer.png
+	timeout 60 xvfb-run -a -s "-screen 0 1024x768x24" love examples/demo --scene speed --method seed --frames 240 --screenshot docs/demo.png
+	timeout 60 xvfb-run -a -s "-screen 0 1024x768x24" love examples/demo --scene fatcross --method fat_cross --frames 100 --screenshot docs/demo-fatcross.png
+	timeout 60 xvfb-run -a -s "-screen 0 1024x768x24" love examples/demo --scene platformer --method fat_cross --frames 300 --screenshot docs/demo-platformer.png
 
 # How much machine code budge makes LuaJIT compile, against its default budget.
 bench-jit:

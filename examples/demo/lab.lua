@@ -13,7 +13,7 @@
 -- Speed: timing each move would mostly time the clock (a C call in the middle of
 -- compiled code costs more than a move). Instead, every few frames the lab replays the
 -- moves of one frame in a tight loop, a few times over, and subtracts the same loop
--- without the moves; the HUD shows the recent samples' time over their moves.
+-- without the moves; the HUD shows the median of the recent samples.
 local budge = require("budge")
 
 local Lab = {}
@@ -186,14 +186,20 @@ function Lab:sample()
   if #samples > SAMPLES then table.remove(samples, 1) end
 end
 
--- Over the recent samples: their time over their moves.
+-- The median of the recent samples: one sample that caught LuaJIT compiling does not
+-- move it.
 function Lab:ns_per_move()
-  local seconds, moves = 0, 0
-  for _, sample in ipairs(self.samples) do
-    seconds, moves = seconds + sample.seconds, moves + sample.moves
-  end
-  if moves == 0 then return 0 end
-  return seconds * 1e9 / moves
+  local values = {}
+  for i, sample in ipairs(self.samples) do values[i] = sample.seconds * 1e9 / sample.moves end
+  if #values == 0 then return 0 end
+  table.sort(values)
+  return values[math.floor((#values + 1) / 2)]
+end
+
+-- "123 ns", or "(timing)" before the first sample (the first frames are not timed).
+function Lab:speed_text()
+  if #self.samples == 0 then return "(timing)" end
+  return ("%.0f ns"):format(self:ns_per_move())
 end
 
 function Lab:tick()
