@@ -45,26 +45,17 @@ local function platformer(budge)
   local ferry = world:add_solid({x = 176, y = 400, width = 48, height = 8})
   local runners = {}
   for i = 1, 7 do
-    runners[i] = world:add_actor({x = 40 + i * 96, y = 40, width = 12, height = 14, vy = 0,
-      direction = i % 2 == 0 and 1 or -1, last_x = 0, stuck = 0})
+    runners[i] = world:add_actor(levels.new_runner(40 + i * 96, 40, i % 2 == 0 and 1 or -1,
+      23 + i * 6))
   end
+  local input, step, move = levels.runner_input, levels.step_runner, world.move
   return function(frame)
     world:move_solid(lift, 0, (frame % 240 < 120) and -1 or 1)
     world:move_solid(ferry, (frame % 128 < 64) and 1 or -1, 0)
     for i = 1, #runners do
       local runner = runners[i]
-      if runner.x == runner.last_x then runner.stuck = runner.stuck + 1 else runner.stuck = 0 end
-      runner.last_x = runner.x
-      if runner.stuck > 20 then runner.direction, runner.stuck = -runner.direction, 0 end
-      if runner.on_ground and frame % (23 + i * 6) == 0 then runner.vy = -7.5 end
-      runner.vy = math.min(runner.vy + 0.45, 10)
-      local _, _, n, hits = world:move(runner, 2.5 * runner.direction, runner.vy)
-      runner.on_ground = false
-      for k = 1, n do
-        local side = hits[k].side
-        if side == "floor" then runner.on_ground = true; runner.vy = 0 end
-        if side == "ceiling" and runner.vy < 0 then runner.vy = 0 end
-      end
+      local left, right, jump = input(runner, frame)
+      step(runner, left, right, jump, move, world)
     end
   end
 end

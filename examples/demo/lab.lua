@@ -8,7 +8,7 @@
 --   * was pushed across its path or back against it ("teleported"),
 --   * or (discrete methods) stopped somewhere the exact sweep did not ("snagged").
 -- The exact sweep's answer comes from moving the actor with axis_sweep first and putting
--- it back.
+-- it back (for the discrete methods only: the others are judged without it).
 --
 -- Speed: timing each move would mostly time the clock (a C call in the middle of
 -- compiled code costs more than a move). Instead, every few frames the lab replays the
@@ -57,25 +57,8 @@ function Lab:add_actor(actor)
   return self.world:add_actor(actor)
 end
 
--- True when the point is strictly inside a solid box or a solid tile.
-function Lab:point_blocked(x, y)
-  for i = 1, #self.solids do
-    local s = self.solids[i]
-    if x > s.x and x < s.x + s.width and y > s.y and y < s.y + s.height then return true end
-  end
-  for i = 1, #self.layers do
-    local layer = self.layers[i]
-    local col, row = x / layer.tile, y / layer.tile
-    if col % 1 ~= 0 and row % 1 ~= 0 then
-      local line = layer.rows[math.floor(row) + 1]
-      local id = line and line[math.floor(col) + 1]
-      if id and id ~= 0 and not (layer.is_oneway and layer.is_oneway(id)) then return true end
-    end
-  end
-  return false
-end
-
--- True when the rectangle strictly overlaps a solid box or a solid tile.
+-- True when the rectangle strictly overlaps a solid box or a solid tile (with width
+-- and height 0: when the point is strictly inside one).
 function Lab:rect_blocked(x, y, width, height)
   for i = 1, #self.solids do
     local s = self.solids[i]
@@ -102,7 +85,7 @@ local function centre_path_blocked(self, x0, y0, x1, y1)
   local steps = math.ceil(length * 2)
   for i = 1, steps - 1 do
     local t = i / steps
-    if self:point_blocked(x0 + (x1 - x0) * t, y0 + (y1 - y0) * t) then return true end
+    if self:rect_blocked(x0 + (x1 - x0) * t, y0 + (y1 - y0) * t, 0, 0) then return true end
   end
   return false
 end
@@ -121,9 +104,13 @@ function Lab:move(actor, dx, dy)
   local world = self.world
   local x0, y0 = actor.x, actor.y
   local blocked_before = self:rect_blocked(x0, y0, actor.width, actor.height)
-  local reference_x, reference_y = world:move(actor, dx, dy, "axis_sweep")
-  actor.x, actor.y = x0, y0
-  world:update(actor)
+  local discrete = not Lab.CONTINUOUS[self.method]
+  local reference_x, reference_y
+  if discrete then -- where the exact sweep ends, for the snag check
+    reference_x, reference_y = world:move(actor, dx, dy, "axis_sweep")
+    actor.x, actor.y = x0, y0
+    world:update(actor)
+  end
   local x, y, n, hits = world:move(actor, dx, dy, self.method)
   self.moves = self.moves + 1
   local count = self.frame_count + 1
@@ -143,8 +130,7 @@ function Lab:move(actor, dx, dy)
     -- through a solid: passed it untouched, or pushed out of its far side
     local pushed = math.abs(moved_x - dx) > EPSILON or math.abs(moved_y - dy) > EPSILON
     kind = pushed and "wrong side" or "tunnelled"
-  elseif not Lab.CONTINUOUS[self.method]
-      and (math.abs(x - reference_x) > 0.5 or math.abs(y - reference_y) > 0.5) then
+  elseif discrete and (math.abs(x - reference_x) > 0.5 or math.abs(y - reference_y) > 0.5) then
     kind = "snagged"
   end
   if kind then self:fail(kind, actor) end

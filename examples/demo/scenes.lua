@@ -97,35 +97,7 @@ local function draw_actor(gfx, actor, color)
 end
 
 -- 1. the platformer -------------------------------------------------------------------
-local GRAVITY, MAX_FALL, RUN, JUMP = 0.45, 10, 2.5, -7.5
-
-local function new_runner(x, y, direction, jump_every)
-  return {x = x, y = y, width = 12, height = 14, vx = 0, vy = 0, on_ground = false,
-    direction = direction, jump_every = jump_every, stuck = 0, last_x = x}
-end
-
--- A runner's scripted input: run one way, jump every few frames, turn when stuck.
-local function scripted_input(runner, frame)
-  if math.abs(runner.x - runner.last_x) < 0.01 then runner.stuck = runner.stuck + 1 else runner.stuck = 0 end
-  runner.last_x = runner.x
-  if runner.stuck > 20 then runner.direction, runner.stuck = -runner.direction, 0 end
-  return {left = runner.direction < 0, right = runner.direction > 0,
-    jump = frame % runner.jump_every == 0}
-end
-
-local function step_runner(lab, runner, input)
-  runner.vx = (input.right and RUN or 0) - (input.left and RUN or 0)
-  if input.jump and runner.on_ground then runner.vy = JUMP end
-  runner.vy = math.min(runner.vy + GRAVITY, MAX_FALL)
-  local _, _, n, hits = lab:move(runner, runner.vx, runner.vy)
-  runner.on_ground = false
-  for i = 1, n do
-    local side = hits[i].side
-    if side == "floor" then runner.on_ground = true; runner.vy = 0 end
-    if side == "ceiling" and runner.vy < 0 then runner.vy = 0 end
-  end
-  remember_contacts(runner, n, hits)
-end
+local MAX_FALL = levels.MAX_FALL
 
 scenes[1] = {
   name = "platformer",
@@ -138,12 +110,12 @@ scenes[1] = {
     -- two moving platforms: one across the pit, one lift
     state.platforms[1] = {solid = lab:add_solid(box(176, 400, 48, 8)), dx = 1, range = {176, 240}}
     state.platforms[2] = {solid = lab:add_solid(box(704, 240, 48, 8)), dy = -1, range = {160, 400}}
-    state.player = lab:add_actor(new_runner(start_x + 2, start_y + 2, 1, 37))
+    state.player = lab:add_actor(levels.new_runner(start_x + 2, start_y + 2, 1, 37))
     state.runners = {state.player}
     local starts = {{100, 40, 1, 29}, {300, 100, -1, 41}, {520, 100, 1, 53}, {680, 300, -1, 31},
       {420, 300, 1, 47}, {60, 200, 1, 23}}
     for _, s in ipairs(starts) do
-      state.runners[#state.runners + 1] = lab:add_actor(new_runner(s[1], s[2], s[3], s[4]))
+      state.runners[#state.runners + 1] = lab:add_actor(levels.new_runner(s[1], s[2], s[3], s[4]))
     end
     return state
   end,
@@ -162,8 +134,13 @@ scenes[1] = {
       end
     end
     for i, runner in ipairs(state.runners) do
-      local control = (i == 1 and not scripted) and input or scripted_input(runner, state.frame)
-      step_runner(lab, runner, control)
+      local left, right, jump
+      if i == 1 and not scripted then
+        left, right, jump = input.left, input.right, input.jump
+      else
+        left, right, jump = levels.runner_input(runner, state.frame)
+      end
+      remember_contacts(runner, levels.step_runner(runner, left, right, jump, lab.move, lab))
     end
   end,
   draw = function(state, lab, gfx)

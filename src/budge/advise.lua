@@ -40,7 +40,7 @@ local advise = {}
 ---@field movers {width: number, height: number, max_speed: number}[] max_speed: px per step
 ---@field bounds? budge.Box the area the movers stay in
 
-local function num(value) return describe(value) end
+local num = describe -- numbers in reasons read as in error messages
 
 local function where(solid)
   return format("the %sx%s block at (%s, %s)", num(solid.width), num(solid.height),

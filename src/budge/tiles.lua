@@ -97,14 +97,14 @@ end
 -- otherwise down and then right. `flat` keeps every rectangle one tile tall.
 local function greedy(kinds, cols, rows, kind, along_rows, flat)
   local used, out = {}, {}
+  -- tile (r, c) is of `kind` and in no rectangle yet
+  local function free(r, c)
+    local i = (r - 1) * cols + c
+    return kinds[i] == kind and not used[i]
+  end
   for row = 1, rows do
     for col = 1, cols do
-      local start = (row - 1) * cols + col
-      if kinds[start] == kind and not used[start] then
-        local function free(r, c)
-          local i = (r - 1) * cols + c
-          return kinds[i] == kind and not used[i]
-        end
+      if free(row, col) then
         local width, height = 1, 1
         if along_rows or flat then
           while col + width <= cols and free(row, col + width) do width = width + 1 end

@@ -292,16 +292,23 @@ end
 
 -- Candidates -------------------------------------------------------------------------
 
+-- The rectangle (x, y)-(x1, y1) clipped to the bounds of the hashed solid boxes; empty
+-- (x > x1 or y > y1) when no box can be in it.
+local function clip_to_boxes(self, x, y, x1, y1)
+  if x < self._box_min_x then x = self._box_min_x end
+  if y < self._box_min_y then y = self._box_min_y end
+  if x1 > self._box_max_x then x1 = self._box_max_x end
+  if y1 > self._box_max_y then y1 = self._box_max_y end
+  return x, y, x1, y1
+end
+
 -- Fills the candidate set with the solid boxes of the spatial hash that touch the
 -- rectangle, skipping those the actor's filter refuses. Clipped to the solids' bounds.
 local function gather_boxes(self, actor, filter, x, y, width, height)
   local set = self._set
   set.n = 0
-  local x1, y1 = x + width, y + height
-  if x < self._box_min_x then x = self._box_min_x end
-  if y < self._box_min_y then y = self._box_min_y end
-  if x1 > self._box_max_x then x1 = self._box_max_x end
-  if y1 > self._box_max_y then y1 = self._box_max_y end
+  local x1, y1
+  x, y, x1, y1 = clip_to_boxes(self, x, y, x + width, y + height)
   if x1 < x or y1 < y or self._solid_count == 0 then return set end
   local found = self._found
   local count = self._solids:collect(x, y, x1 - x, y1 - y, next_stamp(), found, 0)
@@ -355,10 +362,7 @@ local function hash_phase(self, is_x, pos, cross, size, cross_size, delta)
     y = delta > 0 and pos or pos + delta
     y1, x, x1 = y + size + reach, cross, cross + cross_size
   end
-  if x < self._box_min_x then x = self._box_min_x end
-  if y < self._box_min_y then y = self._box_min_y end
-  if x1 > self._box_max_x then x1 = self._box_max_x end
-  if y1 > self._box_max_y then y1 = self._box_max_y end
+  x, y, x1, y1 = clip_to_boxes(self, x, y, x1, y1)
   if x <= x1 and y <= y1 then
     local cx0, cy0, cx1, cy1 = self._solids:cells_of(x, y, x1 - x, y1 - y)
     self._solids:axis_stop(cx0, cy0, cx1, cy1, next_stamp(), probe)
@@ -851,12 +855,7 @@ local function collect_boxes(self, x, y, width, height)
   rehash_moved(self)
   local found, stamp = self._found, next_stamp()
   local n = 0
-  local x1, y1 = x + width, y + height
-  local cx, cy = x, y
-  if cx < self._box_min_x then cx = self._box_min_x end
-  if cy < self._box_min_y then cy = self._box_min_y end
-  local cx1 = x1 < self._box_max_x and x1 or self._box_max_x
-  local cy1 = y1 < self._box_max_y and y1 or self._box_max_y
+  local cx, cy, cx1, cy1 = clip_to_boxes(self, x, y, x + width, y + height)
   if self._solid_count > 0 and cx <= cx1 and cy <= cy1 then
     n = self._solids:collect(cx, cy, cx1 - cx, cy1 - cy, stamp, found, n)
   end
