@@ -25,7 +25,7 @@
 local here = (...):match("^(.*)%.[^%.]+$")
 local box = require(here .. ".box")
 local fatcross = require(here .. ".fatcross")
-local grid = require(here .. ".grid")
+local hash = require(here .. ".hash")
 local world_module = require(here .. ".world")
 
 local check_box, check_wall_type = box.check_box, box.check_wall_type
@@ -52,7 +52,7 @@ end
 local INDEX_CELL = 64
 
 local function new_index(walls)
-  local index = {hash = grid.new_hash(INDEX_CELL), found = {}}
+  local index = {hash = hash.new(INDEX_CELL), found = {}}
   for i = 1, #walls do
     local wall = walls[i]
     index.hash:insert({item = wall, order = i, _stamp = 0}, wall.x, wall.y, wall.width,
@@ -66,7 +66,7 @@ local function by_order(a, b) return a.order < b.order end
 -- The walls whose boxes touch the rectangle (edges included), in the order given.
 local function walls_near(index, x, y, width, height)
   local found = index.found
-  local n = index.hash:collect(x, y, width, height, grid.next_stamp(), found, 0)
+  local n = index.hash:collect(x, y, width, height, found, 0)
   for i = n + 1, #found do found[i] = nil end
   sort(found, by_order)
   local walls = {}

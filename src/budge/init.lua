@@ -8,6 +8,7 @@ local here = (...):gsub("%.init$", "")
 local box = require(here .. ".box")
 local resolve = require(here .. ".resolve")
 local fatcross = require(here .. ".fatcross")
+local move = require(here .. ".move")
 local world = require(here .. ".world")
 local tiles = require(here .. ".tiles")
 local advise = require(here .. ".advise")
@@ -26,5 +27,9 @@ budge.resolve_fat_cross = fatcross.resolve_fat_cross
 budge.new_world = world.new_world                -- world.lua
 budge.tiles = {merge = tiles.merge}              -- tiles.lua
 budge.advise = advise.advise                     -- advise.lua
+-- world:move's method names, cheapest rung of the ladder first (a copy: move.lua's
+-- registry is the one place they are written)
+budge.METHODS = {}
+for i, name in ipairs(move.LADDER) do budge.METHODS[i] = name end
 
 return budge

@@ -6,7 +6,7 @@
 -- * stop_forward / stop_backward: where a box moving along one axis stops against one
 --   candidate ("axis_sweep" applies them for x, then for y from where x ended: the
 --   actors-and-solids model of the Celeste and TowerFall games, done with exact faces
---   instead of pixel by pixel; grid.lua runs them over tiles and hashed boxes).
+--   instead of pixel by pixel; layer.lua and hash.lua run them over tiles and boxes).
 -- * first_contact: the time of impact of a box moving along a straight diagonal
 --   ("swept": the classic swept AABB of the Minkowski-sum literature), with each
 --   contact classified by the axis it came in on.
@@ -21,7 +21,25 @@ local sweep = {}
 
 sweep.NORMAL_X, sweep.NORMAL_Y, sweep.NORMAL_CORNER = 1, 2, 3
 
+---The candidates of one move, as parallel arrays indexed 1..n, filled by the broad phase
+---(solids.lua) and read by first_contact and the discrete methods. Owned by one world.
+---@class budge.CandidateSet
+---@field n integer how many candidates
+---@field x number[] each candidate's box
+---@field y number[]
+---@field w number[]
+---@field h number[]
+---@field oneway boolean[] blocks only moves down onto its top
+---@field other table[] what a hit names: the solid box, or the tile layer handle
+---@field col (integer|nil)[] the tile's column (1-based), nil for a box
+---@field row (integer|nil)[] the tile's row (1-based), nil for a box
+---@field id integer[] the order its item was added to the world (the last tie-breaker)
+---@field touch integer[] first_contact's output: indices of the candidates met first
+---@field normal integer[] and how each was met (NORMAL_X, NORMAL_Y or NORMAL_CORNER)
+---@field touch_n integer how many of touch/normal are valid
+
 ---A new, empty candidate set.
+---@return budge.CandidateSet
 function sweep.new_set()
   return {
     n = 0, x = {}, y = {}, w = {}, h = {}, oneway = {}, other = {}, col = {}, row = {},
@@ -30,9 +48,72 @@ function sweep.new_set()
   }
 end
 
+---One box moving along one axis, filled by move.lua and read by the axis scans of
+---hash.lua (Hash:axis_stop) and layer.lua (layer.tile_face), with the best stop found so
+---far. Owned by one world, so a filter that moves an actor of another world cannot
+---disturb it.
+---LuaJIT shaping: these values travel in a table rather than as arguments, which keeps
+---each compiled scan loop small: LuaJIT aborts a trace whose exits carry more live values
+---than it can coalesce (commit 2e07fe1; aborts listed by make bench-jit).
+---@class budge.AxisProbe
+---@field is_x boolean moving along x (else y)
+---@field forward boolean toward +x or +y
+---@field pos number the box's low coordinate on the axis
+---@field size number its extent on the axis
+---@field edge number pos + size
+---@field reach number where the leading edge gets to after the whole move
+---@field cross number the box's low coordinate across the axis
+---@field cross_end number and its high one
+---@field blocks_oneway boolean oneway candidates stop this move (moving down)
+---@field actor? table the moving box, passed to the filter
+---@field filter? fun(actor: table, other: any): any skips what it returns false or nil for
+---@field best? number output: the nearest stop found so far
+---@field touch budge.HashRecord[] output: the hashed records that stop the box at best
+---@field touched integer output: how many of touch are valid
+---@field cols integer[] output of layer.tile_face: the tiles on the face found
+---@field rows integer[]
+
+---A new, empty axis probe.
+---@return budge.AxisProbe
+function sweep.new_probe()
+  return {is_x = true, forward = true, pos = 0, size = 0, edge = 0, reach = 0, cross = 0,
+    cross_end = 0, blocks_oneway = false, touch = {}, touched = 0, cols = {}, rows = {}}
+end
+
+---One axis of a slab clip (Liang-Barsky): narrows [enter, leave], the fractions of the
+---motion start + delta * t, to where the coordinate lies between low and high. With
+---delta 0 the coordinate never changes: it must lie between them (strictly when `open`).
+---Returns nil when the motion never gets there.
+---@param start number
+---@param delta number
+---@param low number
+---@param high number
+---@param enter number
+---@param leave number
+---@param open boolean
+---@return number? enter, number? leave
+function sweep.clip_axis(start, delta, low, high, enter, leave, open)
+  if delta == 0 then
+    if open then
+      if not (low < start and start < high) then return nil, nil end
+    elseif start < low or start > high then
+      return nil, nil
+    end
+    return enter, leave
+  end
+  local t0, t1 = (low - start) / delta, (high - start) / delta
+  if t0 > t1 then t0, t1 = t1, t0 end
+  if t0 > enter then enter = t0 end
+  if t1 < leave then leave = t1 end
+  return enter, leave
+end
+
 ---The largest position p with p + size <= face: where a box of `size` stops with its
 ---leading edge on `face`. Equal to face - size whenever that is exact (integers, and
 ---halves, quarters... of them); otherwise a few ulps less, never an overlap.
+---@param face number
+---@param size number
+---@return number
 function sweep.before(face, size)
   local position = face - size
   if position + size > face then
@@ -55,6 +136,14 @@ end
 
 ---Moving toward +x or +y against a candidate whose low face is at `near`: the position
 ---where the box stops, or nil.
+---@param near number
+---@param pos number
+---@param edge number
+---@param reach number
+---@param size number
+---@param oneway boolean
+---@param blocks_oneway boolean
+---@return number?
 function sweep.stop_forward(near, pos, edge, reach, size, oneway, blocks_oneway)
   if near <= pos or near >= reach then return nil end
   if near >= edge then
@@ -67,6 +156,13 @@ end
 
 ---Moving toward -x or -y against a candidate whose high face is at `far`: the position
 ---where the box stops, or nil.
+---@param far number
+---@param pos number
+---@param edge number
+---@param reach number
+---@param oneway boolean
+---@param blocks_oneway boolean
+---@return number?
 function sweep.stop_backward(far, pos, edge, reach, oneway, blocks_oneway)
   if far >= edge or far <= reach then return nil end
   if far <= pos then
@@ -93,13 +189,23 @@ end
 ---Time of impact in [0, 1) of the box (x, y, w, h) moving (dx, dy) against the set, or
 ---nil. A candidate that overlaps the box at (start_x, start_y), where the move began,
 ---stops it at time 0 on each axis where the move goes deeper into it (its near face is
----inside the box), as in sweep.axis, and lets it leave otherwise; any other candidate
+---inside the box), as the axis rules above do, and lets it leave otherwise; any other candidate
 ---that overlaps at (x, y) already (by rounding between steps of a long move) is met at
 ---time 0. Lists the candidates met at that time
 ---in set.touch and how each was met in set.normal: NORMAL_X when it came in across x
 ---last, NORMAL_Y across y, NORMAL_CORNER when both at the same instant. A oneway
 ---candidate is met only from above: moving down, its top at or below the box's bottom
 ---at the start, and entered across y.
+---@param set budge.CandidateSet
+---@param start_x number where the whole move began
+---@param start_y number
+---@param x number where this step of it begins
+---@param y number
+---@param w number
+---@param h number
+---@param dx number
+---@param dy number
+---@return number? t
 function sweep.first_contact(set, start_x, start_y, x, y, w, h, dx, dy)
   local xs, ys, ws, hs, oneway = set.x, set.y, set.w, set.h, set.oneway
   local touch, normal = set.touch, set.normal

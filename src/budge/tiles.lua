@@ -21,76 +21,16 @@
 local here = (...):match("^(.*)%.[^%.]+$")
 local box = require(here .. ".box")
 local fatcross = require(here .. ".fatcross")
-local grid = require(here .. ".grid")
+local layer = require(here .. ".layer")
 
 local describe, is_finite = box.describe, box.is_finite
-local format, error, type = string.format, error, type
+local format, error = string.format, error
 
 local tiles = {}
 
----@class budge.MergeOptions
----@field width? integer tiles per row, for a flat grid
----@field x? number where the grid's top-left corner is (default 0)
----@field y? number
----@field is_solid? fun(id): boolean which ids are solid (default: any but nil, false, 0)
----@field is_oneway? fun(id): boolean which ids are oneway platforms (default: none)
+---@class budge.MergeOptions : budge.LayerOptions
 ---@field max_speed? number the movers' largest step, to size fat crosses
 ---@field open_edges? boolean the map's edges count as open faces (default false)
-
--- The default, as in world:add_tiles: any id but nil, false and 0 is solid.
-local function default_solid(id) return id ~= nil and id ~= false and id ~= 0 end
-
--- Reads the caller's grid into kinds[(row - 1) * cols + col] (grid.EMPTY, SOLID or
--- ONEWAY). Accepts rows[row][col], a flat array with opts.width, or a Tiled layer
--- {width =, data =}. Errors name the argument and blame the caller of merge.
-local function read(source, opts)
-  if type(source) ~= "table" then
-    error(format("grid must be a table (grid[row][col], a flat array with opts.width, or a "
-      .. "Tiled layer {width =, data =}), got %s", describe(source)), 3)
-  end
-  local data, cols = source, opts.width
-  if type(source.data) == "table" then -- a Tiled layer
-    data, cols = source.data, source.width
-    if type(cols) ~= "number" or cols < 1 or cols % 1 ~= 0 then
-      error(format("grid.width must be a whole number >= 1 (tiles per row of the Tiled "
-        .. "layer), got %s", describe(cols)), 3)
-    end
-  elseif type(source[1]) == "table" then
-    cols = grid.check_rows(source, 3)
-    data = nil
-  elseif #source > 0 then
-    if type(cols) ~= "number" or cols < 1 or cols % 1 ~= 0 then
-      error(format("opts.width must be a whole number >= 1 for a flat grid (tiles per row), "
-        .. "got %s", describe(cols)), 3)
-    end
-  else
-    cols = 0
-  end
-  local count = data and #data or #source * cols
-  if data and cols > 0 and count % cols ~= 0 then
-    error(format("grid has %d tiles, which is not a whole number of rows of %d", count, cols),
-      3)
-  end
-  local is_solid, is_oneway = opts.is_solid or default_solid, opts.is_oneway
-  local kinds, EMPTY, SOLID, ONEWAY = {}, grid.EMPTY, grid.SOLID, grid.ONEWAY
-  local rows = cols > 0 and count / cols or 0
-  for row = 1, rows do
-    local line = data == nil and source[row] or nil
-    local base = (row - 1) * cols
-    for col = 1, cols do
-      local id
-      if line then id = line[col] else id = data[base + col] end
-      local kind = EMPTY
-      if is_oneway and id ~= nil and is_oneway(id) then
-        kind = ONEWAY
-      elseif id ~= nil and is_solid(id) then
-        kind = SOLID
-      end
-      kinds[base + col] = kind
-    end
-  end
-  return kinds, cols, rows
-end
 
 -- Greedy rectangles over the tiles of `kind`: returns {col, row, cols, rows} records in
 -- row-major order of their top-left tile. `along_rows` grows runs right and then down;
@@ -152,7 +92,7 @@ local function face_open(kinds, cols, rows, rect, dc, dr, open_edges)
   if col0 < 1 or col0 > cols or row0 < 1 or row0 > rows then return open_edges end
   for r = row0, row1 do
     for c = col0, col1 do
-      if kinds[(r - 1) * cols + c] ~= grid.SOLID then return true end
+      if kinds[(r - 1) * cols + c] ~= layer.SOLID then return true end
     end
   end
   return false
@@ -174,19 +114,20 @@ end
 ---@param opts? budge.MergeOptions
 ---@return budge.Box[] boxes
 function tiles.merge(source, tile_width, tile_height, opts)
-  opts = grid.check_layer_options(tile_width, tile_height, opts, 2)
+  opts = layer.check_options(tile_width, tile_height, opts, 2)
   local max_speed = opts.max_speed
   if max_speed ~= nil and (not is_finite(max_speed) or max_speed <= 0) then
     error(format("opts.max_speed must be a finite number > 0 or nil, got %s",
       describe(max_speed)), 2)
   end
-  local kinds, cols, rows = read(source, opts)
+  local data, cols, rows = layer.measure(source, opts.width, 2)
+  local kinds = layer.read(source, data, cols, rows, opts.is_solid, opts.is_oneway, {})
   local origin_x, origin_y, open_edges = opts.x or 0, opts.y or 0, opts.open_edges == true
 
-  local by_rows = greedy(kinds, cols, rows, grid.SOLID, true, false)
-  local by_cols = greedy(kinds, cols, rows, grid.SOLID, false, false)
+  local by_rows = greedy(kinds, cols, rows, layer.SOLID, true, false)
+  local by_cols = greedy(kinds, cols, rows, layer.SOLID, false, false)
   local rects = #by_cols < #by_rows and by_cols or by_rows
-  local oneway = greedy(kinds, cols, rows, grid.ONEWAY, true, true)
+  local oneway = greedy(kinds, cols, rows, layer.ONEWAY, true, true)
 
   local boxes = {}
   for _, rect in ipairs(rects) do

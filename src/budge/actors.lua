@@ -1,0 +1,97 @@
+-- budge.actors: the world's actors, in a list (the world's actor order: the order they
+-- were added, a removal moving the last one into the gap) and in a spatial hash that is
+-- brought up to date lazily. A move only notes that its actor moved; the next query or
+-- moving solid rehashes the noted actors, so a frame of moves pays nothing for the hash.
+
+local actors = {}
+
+---Adds an actor's record to the list and the hash.
+---@param world budge.World
+---@param record budge.Record
+function actors.insert(world, record)
+  local list = world._actor_list
+  local index = #list + 1
+  list[index] = record
+  record.index = index
+  local item = record.item
+  world._actors:insert(record, item.x, item.y, item.width, item.height)
+end
+
+---Takes an actor's record out of the list and the hash.
+---@param world budge.World
+---@param record budge.Record
+function actors.remove(world, record)
+  world._actors:remove(record)
+  local list = world._actor_list
+  local last = list[#list]
+  list[record.index] = last
+  last.index = record.index
+  list[#list] = nil
+  record.index = nil
+end
+
+---Notes that an actor moved: its cells are brought up to date by actors.rehash.
+---@param world budge.World
+---@param record budge.Record
+function actors.moved(world, record)
+  if not record.dirty then
+    record.dirty = true
+    local n = world._n_dirty + 1
+    world._dirty[n] = record
+    world._n_dirty = n
+  end
+end
+
+---Re-registers an actor's record in the cells of its box now.
+---@param world budge.World
+---@param record budge.Record
+function actors.rehash_one(world, record)
+  local item = record.item
+  world._actors:moved(record, item.x, item.y, item.width, item.height)
+end
+
+---Brings the cells of the actors moved since the last call up to date.
+---@param world budge.World
+function actors.rehash(world)
+  local dirty, hash = world._dirty, world._actors
+  for i = 1, world._n_dirty do
+    local record = dirty[i]
+    dirty[i] = nil
+    record.dirty = false
+    if record.index then -- still in the world
+      local item = record.item
+      hash:moved(record, item.x, item.y, item.width, item.height)
+    end
+  end
+  world._n_dirty = 0
+end
+
+---The actor records whose boxes touch the rectangle (edges included), in the world's
+---actor order, into world._near; returns their count.
+---Speed: a straight pass over the actor list, one small loop that LuaJIT compiles once,
+---is cheaper here than keeping the actor hash current on every move (100 moving solids
+---and 1000 actors are 100000 box tests a frame; make bench-world's platforms scene).
+---@param world budge.World
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+---@return integer n
+function actors.near(world, x, y, width, height)
+  local near, list = world._near, world._actor_list
+  local x1, y1 = x + width, y + height
+  local n = 0
+  for i = 1, #list do
+    local record = list[i]
+    local actor = record.item
+    local ax, ay = actor.x, actor.y
+    if ax <= x1 and x <= ax + actor.width and ay <= y1 and y <= ay + actor.height then
+      n = n + 1
+      near[n] = record
+    end
+  end
+  for i = n + 1, #near do near[i] = nil end
+  return n
+end
+
+return actors

@@ -1,0 +1,250 @@
+-- budge.hash: a spatial hash over square cells, for boxes that are not tiles.
+--
+-- The invariant: a record inserted with the rectangle (x, y, width, height) is in every
+-- cell (cx, cy) with floor(x / size) <= cx <= floor((x + width) / size) and likewise on
+-- y, exactly once each, and its _cx0.._cy1 fields name that range. Inside a cell records
+-- keep insertion order. Scans visit each record once by stamping it with a number from
+-- the hash's own counter, so two hashes (two worlds) never disturb each other.
+--
+-- The hash stores what it is given: it reads and writes only the fields declared in
+-- budge.HashRecord. Cells are never freed: a world whose boxes stay in one area stops
+-- allocating once every cell it uses exists. Nothing here iterates with pairs().
+
+local here = (...):match("^(.*)%.[^%.]+$")
+local sweep = require(here .. ".sweep")
+
+local floor = math.floor
+local stop_forward, stop_backward = sweep.stop_forward, sweep.stop_backward
+
+local hash = {}
+
+---What the hash reads and writes on a record. The world's solid records carry a copy of
+---their box for the axis scan; actor records need only the cell and stamp fields.
+---@class budge.HashRecord
+---@field item any what the record stands for; passed to the probe's filter
+---@field x? number the box, copied in (read by Hash:axis_stop only)
+---@field y? number
+---@field width? number
+---@field height? number
+---@field oneway? boolean blocks only moves down onto its top (read by Hash:axis_stop)
+---@field package _cx0 integer the cells the record is in (written by the hash)
+---@field package _cy0 integer
+---@field package _cx1 integer
+---@field package _cy1 integer
+---@field package _stamp integer the last scan that visited it (written by the hash)
+
+---@class budge.Hash
+---@field cell_size number side of a cell
+---@field package _cells table<number, budge.HashRecord[]> cell key -> records, in insertion order
+---@field package _stamp integer the counter scans take their stamps from
+local Hash = {}
+Hash.__index = Hash
+
+-- Cell keys are numbers: cx + cy * KEY_STRIDE + KEY_OFFSET is unique while |cx| and
+-- |cy| < 2^25 (two billion pixels with 64 px cells either way from the origin).
+-- LuaJIT shaping: the offset keeps every key far above the table's array part, because
+-- LuaJIT cannot compile a lookup into a table that is part array, part hash (NYI: the
+-- trace aborts and the scan runs interpreted; commit 0ec2e8a; check with `luajit -jv
+-- bench/world.lua`, no "NYI" abort in the hash scan).
+local KEY_STRIDE = 2 ^ 26
+local KEY_OFFSET = 2 ^ 25 * (KEY_STRIDE + 1)
+
+---A new, empty hash.
+---@param cell_size number > 0, checked by the caller
+---@return budge.Hash
+function hash.new(cell_size)
+  return setmetatable({cell_size = cell_size, _cells = {}, _stamp = 0}, Hash)
+end
+
+---A fresh stamp for one scan: records visited in that scan carry it.
+---@return integer
+function Hash:next_stamp()
+  local stamp = self._stamp + 1
+  self._stamp = stamp
+  return stamp
+end
+
+---The cell range (cx0, cy0, cx1, cy1) a rectangle touches, edges included.
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+---@return integer cx0, integer cy0, integer cx1, integer cy1
+function Hash:cells_of(x, y, width, height)
+  local size = self.cell_size
+  return floor(x / size), floor(y / size), floor((x + width) / size), floor((y + height) / size)
+end
+
+---Number of cells the rectangle touches; lets a caller avoid walking a huge empty area.
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+---@return integer
+function Hash:cell_count(x, y, width, height)
+  local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
+  return (cx1 - cx0 + 1) * (cy1 - cy0 + 1)
+end
+
+---Registers `record` in every cell the rectangle touches, edges included.
+---@param record budge.HashRecord
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+function Hash:insert(record, x, y, width, height)
+  local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
+  record._cx0, record._cy0, record._cx1, record._cy1 = cx0, cy0, cx1, cy1
+  local cells = self._cells
+  for cy = cy0, cy1 do
+    for cx = cx0, cx1 do
+      local key = cx + cy * KEY_STRIDE + KEY_OFFSET
+      local cell = cells[key]
+      if cell == nil then
+        cell = {}
+        cells[key] = cell
+      end
+      cell[#cell + 1] = record
+    end
+  end
+end
+
+---Removes `record` from the cells it was inserted in.
+---@param record budge.HashRecord
+function Hash:remove(record)
+  local cells = self._cells
+  for cy = record._cy0, record._cy1 do
+    for cx = record._cx0, record._cx1 do
+      local cell = cells[cx + cy * KEY_STRIDE + KEY_OFFSET]
+      local count = #cell
+      for i = 1, count do
+        if cell[i] == record then
+          -- keep insertion order inside the cell: shift, don't swap
+          for j = i, count - 1 do cell[j] = cell[j + 1] end
+          cell[count] = nil
+          break
+        end
+      end
+    end
+  end
+end
+
+---Re-registers `record` if the rectangle now touches other cells than it did; cheap
+---when it does not (an actor crosses a cell edge once every few moves).
+---@param record budge.HashRecord
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+function Hash:moved(record, x, y, width, height)
+  local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
+  if cx0 ~= record._cx0 or cy0 ~= record._cy0 or cx1 ~= record._cx1 or cy1 ~= record._cy1 then
+    self:remove(record)
+    self:insert(record, x, y, width, height)
+  end
+end
+
+---Appends to `out` (from index n + 1) every record in the cells touched by the
+---rectangle, once each, and returns the new count. Records come cell by cell in row
+---order, and in insertion order inside a cell; callers sort what they return.
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+---@param out budge.HashRecord[]
+---@param n integer how many entries of `out` to keep
+---@return integer n
+function Hash:collect(x, y, width, height, out, n)
+  local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
+  local stamp = self:next_stamp()
+  local cells = self._cells
+  for cy = cy0, cy1 do
+    for cx = cx0, cx1 do
+      local cell = cells[cx + cy * KEY_STRIDE + KEY_OFFSET]
+      if cell then
+        for i = 1, #cell do
+          local record = cell[i]
+          if record._stamp ~= stamp then
+            record._stamp = stamp
+            n = n + 1
+            out[n] = record
+          end
+        end
+      end
+    end
+  end
+  return n
+end
+
+-- One record that spans the probe's path across: where it stops the probe, if it does,
+-- and whether that is the best stop so far.
+-- LuaJIT shaping: probe fields are read where they are used, not hoisted into locals:
+-- fewer values live across the loop's exits keeps LuaJIT from aborting the trace
+-- ("register coalescing too complex"); moves near hashed solids went 405 -> 270 ns
+-- (commit bc30993, make bench-world).
+local function consider(probe, record, low, length)
+  local stop
+  if probe.forward then
+    stop = stop_forward(low, probe.pos, probe.edge, probe.reach, probe.size, record.oneway,
+      probe.blocks_oneway)
+  else
+    stop = stop_backward(low + length, probe.pos, probe.edge, probe.reach, record.oneway,
+      probe.blocks_oneway)
+  end
+  if stop == nil then return end
+  local best = probe.best
+  if best ~= nil and (probe.forward and stop > best or not probe.forward and stop < best) then
+    return
+  end
+  local filter = probe.filter
+  if filter ~= nil and not filter(probe.actor, record.item) then return end
+  local touched = probe.touched
+  if stop ~= best then probe.best = stop; touched = 0 end
+  touched = touched + 1
+  probe.touch[touched] = record
+  probe.touched = touched
+end
+
+local function scan_cell(cell, stamp, probe)
+  for i = 1, #cell do
+    local record = cell[i]
+    if record._stamp ~= stamp then
+      record._stamp = stamp
+      if probe.is_x then
+        if record.y < probe.cross_end and probe.cross < record.y + record.height then
+          consider(probe, record, record.x, record.width)
+        end
+      elseif record.x < probe.cross_end and probe.cross < record.x + record.width then
+        consider(probe, record, record.y, record.height)
+      end
+    end
+  end
+end
+
+---Runs the probe over the records (each with its box's x, y, width, height copied in,
+---and `item` what the filter is given) in the cells the rectangle touches: where the
+---box stops, as sweep.stop_forward/backward decide, lands in probe.best, and the records
+---that stop it there in probe.touch[1..probe.touched]. The probe's filter skips records.
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+---@param probe budge.AxisProbe
+function Hash:axis_stop(x, y, width, height, probe)
+  local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
+  local stamp = self:next_stamp()
+  local cells = self._cells
+  -- LuaJIT shaping: one flat loop over the cells, not two nested ones: one trace with
+  -- its side exits instead of a trace per loop level (commit 2e07fe1; traces counted by
+  -- make bench-jit).
+  local columns = cx1 - cx0 + 1
+  local base = cx0 + cy0 * KEY_STRIDE + KEY_OFFSET
+  for k = 0, columns * (cy1 - cy0 + 1) - 1 do
+    local row = floor(k / columns)
+    local cell = cells[base + (k - row * columns) + row * KEY_STRIDE]
+    if cell then scan_cell(cell, stamp, probe) end
+  end
+end
+
+hash.Hash = Hash
+return hash

@@ -1,0 +1,457 @@
+-- budge.layer: tile layers. The caller's grid is read once into a flat array of kinds
+-- (EMPTY, SOLID, ONEWAY) indexed (row - 1) * cols + col, and every question about tiles
+-- is answered from that array by index: no per-tile boxes, no hashing.
+--
+-- One reader serves world:add_tiles and budge.tiles.merge: grid[row][col], a flat array
+-- with opts.width tiles per row, or a Tiled layer {width =, data =}. Tile (col, row)
+-- covers [x + (col - 1) * tile_width, x + col * tile_width] on x and likewise on y, the
+-- one expression used for tile edges everywhere. Nothing here iterates with pairs().
+
+local here = (...):match("^(.*)%.[^%.]+$")
+local box = require(here .. ".box")
+local sweep = require(here .. ".sweep")
+
+local floor, ceil, HUGE = math.floor, math.ceil, math.huge
+local format, error, type, ipairs = string.format, error, type, ipairs
+local describe, is_finite = box.describe, box.is_finite
+local clip_axis = sweep.clip_axis
+
+local layer = {}
+
+local EMPTY, SOLID, ONEWAY = 0, 1, 2
+layer.EMPTY, layer.SOLID, layer.ONEWAY = EMPTY, SOLID, ONEWAY
+
+---Options shared by world:add_tiles and budge.tiles.merge.
+---@class budge.LayerOptions
+---@field x? number where the grid's top-left corner is (default 0)
+---@field y? number
+---@field width? integer tiles per row, for a flat grid
+---@field is_solid? fun(id: any): boolean which ids are solid (default: any but nil, false, 0)
+---@field is_oneway? fun(id: any): boolean which ids are oneway platforms (default: none)
+
+---The handle world:add_tiles returns: hits and queries name it, world:remove and
+---world:update take it. Its public fields are for reading; change the grid, then call
+---world:update(handle).
+---@class budge.TileLayer
+---@field x number the layer's left edge
+---@field y number its top edge
+---@field tile_width number
+---@field tile_height number
+---@field cols integer tiles per row
+---@field rows integer rows of tiles
+---@field grid table the caller's grid, as given (reread by world:update)
+---@field package _kinds integer[] EMPTY, SOLID or ONEWAY at (row - 1) * cols + col
+---@field package _inverse_width number 1 / tile_width
+---@field package _inverse_height number 1 / tile_height
+---@field package _width? integer opts.width, for a flat grid
+---@field package _is_solid? fun(id: any): boolean
+---@field package _is_oneway? fun(id: any): boolean
+
+---Checks the options a tile layer shares wherever it is read: tile sizes > 0, opts a
+---table or nil, opts.x and opts.y finite, opts.is_solid and opts.is_oneway functions.
+---Errors at `level` (1 = the caller of the function that calls this).
+---@param tile_width any
+---@param tile_height any
+---@param opts any
+---@param level integer
+---@return budge.LayerOptions opts the options, or a new empty table
+function layer.check_options(tile_width, tile_height, opts, level)
+  if not is_finite(tile_width) or tile_width <= 0 then
+    error(format("tile_width must be a finite number > 0, got %s", describe(tile_width)),
+      level + 1)
+  end
+  if not is_finite(tile_height) or tile_height <= 0 then
+    error(format("tile_height must be a finite number > 0, got %s", describe(tile_height)),
+      level + 1)
+  end
+  if opts ~= nil and type(opts) ~= "table" then
+    error(format("opts must be a table or nil, got %s", describe(opts)), level + 1)
+  end
+  opts = opts or {}
+  for _, field in ipairs({"x", "y"}) do
+    if opts[field] ~= nil and not is_finite(opts[field]) then
+      error(format("opts.%s must be a finite number, got %s", field, describe(opts[field])),
+        level + 1)
+    end
+  end
+  for _, field in ipairs({"is_solid", "is_oneway"}) do
+    if opts[field] ~= nil and type(opts[field]) ~= "function" then
+      error(format("opts.%s must be a function or nil, got %s", field, describe(opts[field])),
+        level + 1)
+    end
+  end
+  return opts
+end
+
+-- Checks that `rows` (a table whose first entry is a table) is a 2D grid whose rows
+-- all have the same length. Returns the number of columns.
+local function check_rows(rows, level)
+  local cols
+  for row = 1, #rows do
+    local line = rows[row]
+    if type(line) ~= "table" then
+      error(format("grid[%d] must be a table (a row of tiles), got %s", row, describe(line)),
+        level + 1)
+    end
+    if cols == nil then
+      cols = #line
+    elseif #line ~= cols then
+      error(format("grid[%d] has %d tiles but grid[1] has %d: every row must have the same "
+        .. "length", row, #line, cols), level + 1)
+    end
+  end
+  return cols or 0
+end
+
+local function check_width(cols, message, level)
+  if type(cols) ~= "number" or cols < 1 or cols % 1 ~= 0 then
+    error(format(message, describe(cols)), level + 1)
+  end
+end
+
+---Measures the caller's grid without reading its ids: which form it is in and its size.
+---Errors (naming the argument "grid") at `level` for anything that is not a grid.
+---@param source any grid[row][col], a flat array, or a Tiled layer {width =, data =}
+---@param width any opts.width, for a flat array
+---@param level integer
+---@return table|nil data the flat array of ids, or nil for a 2D grid
+---@return integer cols
+---@return integer rows
+function layer.measure(source, width, level)
+  if type(source) ~= "table" then
+    error(format("grid must be a table (grid[row][col], a flat array with opts.width, or a "
+      .. "Tiled layer {width =, data =}), got %s", describe(source)), level + 1)
+  end
+  local data, cols = source, width
+  if type(source.data) == "table" then -- a Tiled layer
+    data, cols = source.data, source.width
+    check_width(cols, "grid.width must be a whole number >= 1 (tiles per row of the Tiled "
+      .. "layer), got %s", level + 1)
+  elseif type(source[1]) == "table" then
+    return nil, check_rows(source, level + 1), #source
+  elseif #source > 0 then
+    check_width(cols, "opts.width must be a whole number >= 1 for a flat grid (tiles per "
+      .. "row), got %s", level + 1)
+  else
+    return nil, 0, 0
+  end
+  local count = #data
+  if count % cols ~= 0 then
+    error(format("grid has %d tiles, which is not a whole number of rows of %d", count, cols),
+      level + 1)
+  end
+  return data, cols, count / cols
+end
+
+---Reads the ids of a measured grid into `kinds` (EMPTY, SOLID or ONEWAY at
+---(row - 1) * cols + col). `is_solid(id)` defaults to "any id but nil, false and 0"
+---(0 is empty because Tiled and most tile maps use it so), `is_oneway(id)` to "never".
+---@param source table the grid
+---@param data table|nil what layer.measure returned
+---@param cols integer
+---@param rows integer
+---@param is_solid? fun(id: any): boolean
+---@param is_oneway? fun(id: any): boolean
+---@param kinds integer[] filled in place
+---@return integer[] kinds
+function layer.read(source, data, cols, rows, is_solid, is_oneway, kinds)
+  for row = 1, rows do
+    local line = data == nil and source[row] or nil
+    local base = (row - 1) * cols
+    for col = 1, cols do
+      local id
+      if line then id = line[col] else id = data[base + col] end
+      local kind = EMPTY
+      if is_oneway and id ~= nil and is_oneway(id) then
+        kind = ONEWAY
+      elseif is_solid then
+        if id ~= nil and is_solid(id) then kind = SOLID end
+      elseif id and id ~= 0 then
+        kind = SOLID
+      end
+      kinds[base + col] = kind
+    end
+  end
+  return kinds
+end
+
+---A tile layer read from the caller's grid; the options have been checked.
+---@param source any
+---@param tile_width number
+---@param tile_height number
+---@param opts budge.LayerOptions checked by layer.check_options
+---@param level integer where grid errors point
+---@return budge.TileLayer
+function layer.new(source, tile_width, tile_height, opts, level)
+  local data, cols, rows = layer.measure(source, opts.width, level + 1)
+  local tiles = {
+    x = opts.x or 0, y = opts.y or 0, tile_width = tile_width, tile_height = tile_height,
+    cols = cols, rows = rows, grid = source,
+    _kinds = {}, _inverse_width = 1 / tile_width, _inverse_height = 1 / tile_height,
+    _width = opts.width, _is_solid = opts.is_solid, _is_oneway = opts.is_oneway,
+  }
+  layer.read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds)
+  return tiles
+end
+
+---Rereads the layer's grid after the game changed it; the grid must keep its size.
+---Errors at `level` and changes nothing when it cannot.
+---@param tiles budge.TileLayer
+---@param level integer
+function layer.reread(tiles, level)
+  local source = tiles.grid
+  local data, cols, rows = layer.measure(source, tiles._width, level + 1)
+  if cols ~= tiles.cols or rows ~= tiles.rows then
+    error(format("grid changed size from %dx%d to %dx%d: remove the layer and add it again",
+      tiles.cols, tiles.rows, cols, rows), level + 1)
+  end
+  layer.read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds)
+end
+
+---The tile indices (0-based) whose span meets the open interval (from, to), clamped to
+---[0, count - 1]; first > last when none does. A division that rounds onto a boundary
+---is caught by checking the result against it.
+---@param origin number
+---@param size number
+---@param inverse number 1 / size
+---@param count integer
+---@param from number
+---@param to number
+---@return integer first, integer last
+local function span(origin, size, inverse, count, from, to)
+  local first = floor((from - origin) * inverse)
+  if origin + first * size > from then first = first - 1 end
+  local last = ceil((to - origin) * inverse) - 1
+  if origin + (last + 1) * size < to then last = last + 1 end
+  if first < 0 then first = 0 end
+  if last > count - 1 then last = count - 1 end
+  return first, last
+end
+layer.span = span
+
+---Appends to the candidate set the non-empty tiles that overlap the rectangle
+---(strictly), row by row, each as a box with `other` = the layer and `id` its order,
+---stopping once the set holds `limit` entries. The one loop over a rectangle of tiles:
+---moves gather with it, queries ask it whether any tile is there.
+---@param tiles budge.TileLayer
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+---@param set budge.CandidateSet
+---@param id integer
+---@param limit? integer
+function layer.gather(tiles, x, y, width, height, set, id, limit)
+  local tile_width, tile_height = tiles.tile_width, tiles.tile_height
+  local col0, col1 = span(tiles.x, tile_width, tiles._inverse_width, tiles.cols, x, x + width)
+  if col0 > col1 then return end
+  local row0, row1 = span(tiles.y, tile_height, tiles._inverse_height, tiles.rows, y,
+    y + height)
+  local kinds, cols = tiles._kinds, tiles.cols
+  local n = set.n
+  limit = limit or HUGE
+  local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
+  local set_cols, set_rows, ids = set.col, set.row, set.id
+  for row = row0, row1 do
+    local base = row * cols + 1
+    for col = col0, col1 do
+      local kind = kinds[base + col]
+      if kind ~= EMPTY then
+        n = n + 1
+        xs[n], ys[n] = tiles.x + col * tile_width, tiles.y + row * tile_height
+        ws[n], hs[n] = tile_width, tile_height
+        oneway[n] = kind == ONEWAY
+        other[n], set_cols[n], set_rows[n], ids[n] = tiles, col + 1, row + 1, id
+        if n >= limit then set.n = n return end
+      end
+    end
+  end
+  set.n = n
+end
+
+---True when any non-empty tile strictly overlaps the rectangle. `set` is scratch.
+---@param tiles budge.TileLayer
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+---@param set budge.CandidateSet emptied
+---@return boolean
+function layer.touches(tiles, x, y, width, height, set)
+  set.n = 0
+  layer.gather(tiles, x, y, width, height, set, 0, 1)
+  local found = set.n > 0
+  set.n = 0
+  return found
+end
+
+---Fraction of the segment (x1, y1) + (dx, dy) * t, 0 <= t <= 1, at which it enters the
+---open box, or nil if it never does.
+---@param x1 number
+---@param y1 number
+---@param dx number
+---@param dy number
+---@param bx number
+---@param by number
+---@param bw number
+---@param bh number
+---@return number?
+function layer.segment_enter(x1, y1, dx, dy, bx, by, bw, bh)
+  local enter, leave = clip_axis(x1, dx, bx, bx + bw, 0, 1, true)
+  if enter == nil then return nil end
+  enter, leave = clip_axis(y1, dy, by, by + bh, enter, leave, true)
+  if enter == nil then return nil end
+  if enter < leave or (enter == leave and dx == 0 and dy == 0) then return enter end
+  return nil
+end
+local segment_enter = layer.segment_enter
+
+---Fraction of the segment at which it first enters a non-empty tile, or nil. Walks the
+---part of the segment inside the layer in pieces no longer than a tile, nearest first,
+---and stops at the first piece that holds the answer: the work follows the tiles along
+---the segment, not the rectangle around it. `set` is scratch.
+---@param tiles budge.TileLayer
+---@param x1 number
+---@param y1 number
+---@param dx number
+---@param dy number
+---@param set budge.CandidateSet emptied
+---@return number?
+function layer.segment_first(tiles, x1, y1, dx, dy, set)
+  local lx, ly = tiles.x, tiles.y
+  local enter, leave = clip_axis(x1, dx, lx, lx + tiles.cols * tiles.tile_width, 0, 1, false)
+  if enter == nil then return nil end
+  enter, leave = clip_axis(y1, dy, ly, ly + tiles.rows * tiles.tile_height, enter, leave, false)
+  if enter == nil or enter > leave then return nil end
+  local adx, ady = dx < 0 and -dx or dx, dy < 0 and -dy or dy
+  local tile = tiles.tile_width < tiles.tile_height and tiles.tile_width or tiles.tile_height
+  local pieces = ceil((adx > ady and adx or ady) * (leave - enter) / tile)
+  if pieces < 1 then pieces = 1 end
+  local best
+  local xs, ys, ws, hs = set.x, set.y, set.w, set.h
+  for k = 1, pieces do
+    local t0 = enter + (leave - enter) * (k - 1) / pieces
+    local t1 = k == pieces and leave or enter + (leave - enter) * k / pieces
+    local ax, ay, bx, by = x1 + dx * t0, y1 + dy * t0, x1 + dx * t1, y1 + dy * t1
+    local left, top = ax < bx and ax or bx, ay < by and ay or by
+    set.n = 0
+    layer.gather(tiles, left, top, (ax < bx and bx - ax or ax - bx),
+      (ay < by and by - ay or ay - by), set, 0)
+    for i = 1, set.n do
+      local t = segment_enter(x1, y1, dx, dy, xs[i], ys[i], ws[i], hs[i])
+      if t and (best == nil or t < best) then best = t end
+    end
+    if best and best <= t1 then break end
+  end
+  set.n = 0
+  return best
+end
+
+-- The axis scan --------------------------------------------------------------------
+
+-- True when line `j` of tiles holds a tile that stops the box (rows or columns first..last
+-- across it; `oneway_ok`: oneway tiles count).
+local function line_blocks(kinds, base, cross_stride, first, last, oneway_ok)
+  for i = first, last do
+    local kind = kinds[base + i * cross_stride]
+    if kind == SOLID or (kind == ONEWAY and oneway_ok) then return true end
+  end
+  return false
+end
+
+-- The scans start at the tile holding the box's trailing edge (a rounding can only move
+-- that by one tile, onto or past a tile whose face is not a candidate anyway) and stop
+-- at the first face beyond the leading edge's reach, or at the end of the layer. They
+-- return the line, its face and whether oneway tiles counted on it.
+-- LuaJIT shaping: the scans find the line only, in small functions of positional
+-- arguments, and the contacts on it are listed afterwards by list_line: a single loop
+-- doing both aborted its trace (too many live values at its exits) and ran interpreted
+-- (commits 47b7630, e457877; aborts listed by make bench-jit).
+local function scan_forward(kinds, stride, cross_stride, first, last, origin, tile, from, to,
+                            pos, edge, far, blocks_oneway)
+  for j = from, to do
+    local near = origin + j * tile
+    if near >= far then return nil end
+    if near > pos then
+      local ok = blocks_oneway and near >= edge
+      if line_blocks(kinds, j * stride + 1, cross_stride, first, last, ok) then
+        return j, near, ok
+      end
+    end
+  end
+  return nil
+end
+
+local function scan_backward(kinds, stride, cross_stride, first, last, origin, tile, from,
+                             pos, edge, far, blocks_oneway)
+  for j = from, 0, -1 do
+    local high = origin + (j + 1) * tile
+    if high <= far then return nil end
+    if high < edge then
+      local ok = blocks_oneway and high <= pos
+      if line_blocks(kinds, j * stride + 1, cross_stride, first, last, ok) then
+        return j, high, ok
+      end
+    end
+  end
+  return nil
+end
+
+-- Lists the tiles on line `line` that stop the box into probe.cols and probe.rows
+-- (1-based); returns how many.
+local function list_line(kinds, base, cross_stride, first, last, oneway_ok, line, is_x, probe)
+  local out_cols, out_rows = probe.cols, probe.rows
+  local found = 0
+  for i = first, last do
+    local kind = kinds[base + i * cross_stride]
+    if kind == SOLID or (kind == ONEWAY and oneway_ok) then
+      found = found + 1
+      if is_x then out_cols[found], out_rows[found] = line + 1, i + 1
+      else out_cols[found], out_rows[found] = i + 1, line + 1 end
+    end
+  end
+  return found
+end
+
+---Nearest tile face the probe's box meets in the layer. Returns the face coordinate
+---and how many tiles lie on it (their 1-based col and row written to probe.cols and
+---probe.rows), or nil, 0. A face inside the box (the box overlaps a solid tile) counts
+---too, so the caller can refuse to go deeper. Scans outward from the box and stops at
+---the first face, so a huge move costs at most the layer's width.
+---@param tiles budge.TileLayer
+---@param probe budge.AxisProbe
+---@return number? face, integer count
+function layer.tile_face(tiles, probe)
+  local is_x, pos, edge = probe.is_x, probe.pos, probe.edge
+  local origin, tile, inverse, count, stride, cross_stride, first, last
+  if is_x then
+    origin, tile, inverse, count, stride, cross_stride =
+      tiles.x, tiles.tile_width, tiles._inverse_width, tiles.cols, 1, tiles.cols
+    first, last = span(tiles.y, tiles.tile_height, tiles._inverse_height, tiles.rows,
+      probe.cross, probe.cross_end)
+  else
+    origin, tile, inverse, count, stride, cross_stride =
+      tiles.y, tiles.tile_height, tiles._inverse_height, tiles.rows, tiles.cols, 1
+    first, last = span(tiles.x, tiles.tile_width, tiles._inverse_width, tiles.cols,
+      probe.cross, probe.cross_end)
+  end
+  if first > last then return nil, 0 end
+  local kinds = tiles._kinds
+  local line, face, oneway_ok
+  if probe.forward then
+    local from = floor((pos - origin) * inverse)
+    if from < 0 then from = 0 end
+    line, face, oneway_ok = scan_forward(kinds, stride, cross_stride, first, last,
+      origin, tile, from, count - 1, pos, edge, probe.reach, probe.blocks_oneway)
+  else
+    local from = ceil((edge - origin) * inverse) - 1
+    if from > count - 1 then from = count - 1 end
+    line, face, oneway_ok = scan_backward(kinds, stride, cross_stride, first, last,
+      origin, tile, from, pos, edge, probe.reach, probe.blocks_oneway)
+  end
+  if line == nil then return nil, 0 end
+  return face, list_line(kinds, line * stride + 1, cross_stride, first, last, oneway_ok,
+    line, is_x, probe)
+end
+
+return layer
