@@ -30,6 +30,7 @@ build = {
     ["budge.fatcross"] = "src/budge/fatcross.lua",
     ["budge.sweep"] = "src/budge/sweep.lua",
     ["budge.hash"] = "src/budge/hash.lua",
+    ["budge.tilegrid"] = "src/budge/tilegrid.lua",
     ["budge.layer"] = "src/budge/layer.lua",
     ["budge.solids"] = "src/budge/solids.lua",
     ["budge.actors"] = "src/budge/actors.lua",

@@ -1,33 +1,22 @@
--- budge.layer: tile layers. The caller's grid is read once into a flat array of kinds
--- (EMPTY, SOLID, ONEWAY) indexed (row - 1) * cols + col, and every question about tiles
--- is answered from that array by index: no per-tile boxes, no hashing.
---
--- One reader serves world:add_tiles and budge.tiles.merge: grid[row][col], a flat array
--- with opts.width tiles per row, or a Tiled layer {width =, data =}. Tile (col, row)
--- covers [x + (col - 1) * tile_width, x + col * tile_width] on x and likewise on y, the
--- one expression used for tile edges everywhere. Nothing here iterates with pairs().
+-- budge.layer: tile layers. The caller's grid is read once (by tilegrid.lua) into a
+-- flat array of kinds (EMPTY, SOLID, ONEWAY) indexed (row - 1) * cols + col, and every
+-- question about tiles is answered from that array by index: no per-tile boxes, no
+-- hashing. Tile (col, row) covers [x + (col - 1) * tile_width, x + col * tile_width] on
+-- x and likewise on y, the one expression used for tile edges everywhere. Nothing here
+-- iterates with pairs().
 
 local here = (...):match("^(.*)%.[^%.]+$")
-local box = require(here .. ".box")
 local sweep = require(here .. ".sweep")
+local tilegrid = require(here .. ".tilegrid")
 
 local floor, ceil, HUGE = math.floor, math.ceil, math.huge
-local format, error, type, ipairs = string.format, error, type, ipairs
-local describe, is_finite = box.describe, box.is_finite
-local clip_axis = sweep.clip_axis
+local format, error = string.format, error
+local clip_axis, segment_enter = sweep.clip_axis, sweep.segment_enter
+local measure, read = tilegrid.measure, tilegrid.read
 
 local layer = {}
 
-local EMPTY, SOLID, ONEWAY = 0, 1, 2
-layer.EMPTY, layer.SOLID, layer.ONEWAY = EMPTY, SOLID, ONEWAY
-
----Options shared by world:add_tiles and budge.tiles.merge.
----@class budge.LayerOptions
----@field x? number where the grid's top-left corner is (default 0)
----@field y? number
----@field width? integer tiles per row, for a flat grid
----@field is_solid? fun(id: any): boolean which ids are solid (default: any but nil, false, 0)
----@field is_oneway? fun(id: any): boolean which ids are oneway platforms (default: none)
+local EMPTY, SOLID, ONEWAY = tilegrid.EMPTY, tilegrid.SOLID, tilegrid.ONEWAY
 
 ---The handle world:add_tiles returns: hits and queries name it, world:remove and
 ---world:update take it. Its public fields are for reading; change the grid, then call
@@ -47,134 +36,6 @@ layer.EMPTY, layer.SOLID, layer.ONEWAY = EMPTY, SOLID, ONEWAY
 ---@field package _is_solid? fun(id: any): boolean
 ---@field package _is_oneway? fun(id: any): boolean
 
----Checks the options a tile layer shares wherever it is read: tile sizes > 0, opts a
----table or nil, opts.x and opts.y finite, opts.is_solid and opts.is_oneway functions.
----Errors at `level` (1 = the caller of the function that calls this).
----@param tile_width any
----@param tile_height any
----@param opts any
----@param level integer
----@return budge.LayerOptions opts the options, or a new empty table
-function layer.check_options(tile_width, tile_height, opts, level)
-  if not is_finite(tile_width) or tile_width <= 0 then
-    error(format("tile_width must be a finite number > 0, got %s", describe(tile_width)),
-      level + 1)
-  end
-  if not is_finite(tile_height) or tile_height <= 0 then
-    error(format("tile_height must be a finite number > 0, got %s", describe(tile_height)),
-      level + 1)
-  end
-  if opts ~= nil and type(opts) ~= "table" then
-    error(format("opts must be a table or nil, got %s", describe(opts)), level + 1)
-  end
-  opts = opts or {}
-  for _, field in ipairs({"x", "y"}) do
-    if opts[field] ~= nil and not is_finite(opts[field]) then
-      error(format("opts.%s must be a finite number, got %s", field, describe(opts[field])),
-        level + 1)
-    end
-  end
-  for _, field in ipairs({"is_solid", "is_oneway"}) do
-    if opts[field] ~= nil and type(opts[field]) ~= "function" then
-      error(format("opts.%s must be a function or nil, got %s", field, describe(opts[field])),
-        level + 1)
-    end
-  end
-  return opts
-end
-
--- Checks that `rows` (a table whose first entry is a table) is a 2D grid whose rows
--- all have the same length. Returns the number of columns.
-local function check_rows(rows, level)
-  local cols
-  for row = 1, #rows do
-    local line = rows[row]
-    if type(line) ~= "table" then
-      error(format("grid[%d] must be a table (a row of tiles), got %s", row, describe(line)),
-        level + 1)
-    end
-    if cols == nil then
-      cols = #line
-    elseif #line ~= cols then
-      error(format("grid[%d] has %d tiles but grid[1] has %d: every row must have the same "
-        .. "length", row, #line, cols), level + 1)
-    end
-  end
-  return cols or 0
-end
-
-local function check_width(cols, message, level)
-  if type(cols) ~= "number" or cols < 1 or cols % 1 ~= 0 then
-    error(format(message, describe(cols)), level + 1)
-  end
-end
-
----Measures the caller's grid without reading its ids: which form it is in and its size.
----Errors (naming the argument "grid") at `level` for anything that is not a grid.
----@param source any grid[row][col], a flat array, or a Tiled layer {width =, data =}
----@param width any opts.width, for a flat array
----@param level integer
----@return table|nil data the flat array of ids, or nil for a 2D grid
----@return integer cols
----@return integer rows
-function layer.measure(source, width, level)
-  if type(source) ~= "table" then
-    error(format("grid must be a table (grid[row][col], a flat array with opts.width, or a "
-      .. "Tiled layer {width =, data =}), got %s", describe(source)), level + 1)
-  end
-  local data, cols = source, width
-  if type(source.data) == "table" then -- a Tiled layer
-    data, cols = source.data, source.width
-    check_width(cols, "grid.width must be a whole number >= 1 (tiles per row of the Tiled "
-      .. "layer), got %s", level + 1)
-  elseif type(source[1]) == "table" then
-    return nil, check_rows(source, level + 1), #source
-  elseif #source > 0 then
-    check_width(cols, "opts.width must be a whole number >= 1 for a flat grid (tiles per "
-      .. "row), got %s", level + 1)
-  else
-    return nil, 0, 0
-  end
-  local count = #data
-  if count % cols ~= 0 then
-    error(format("grid has %d tiles, which is not a whole number of rows of %d", count, cols),
-      level + 1)
-  end
-  return data, cols, count / cols
-end
-
----Reads the ids of a measured grid into `kinds` (EMPTY, SOLID or ONEWAY at
----(row - 1) * cols + col). `is_solid(id)` defaults to "any id but nil, false and 0"
----(0 is empty because Tiled and most tile maps use it so), `is_oneway(id)` to "never".
----@param source table the grid
----@param data table|nil what layer.measure returned
----@param cols integer
----@param rows integer
----@param is_solid? fun(id: any): boolean
----@param is_oneway? fun(id: any): boolean
----@param kinds integer[] filled in place
----@return integer[] kinds
-function layer.read(source, data, cols, rows, is_solid, is_oneway, kinds)
-  for row = 1, rows do
-    local line = data == nil and source[row] or nil
-    local base = (row - 1) * cols
-    for col = 1, cols do
-      local id
-      if line then id = line[col] else id = data[base + col] end
-      local kind = EMPTY
-      if is_oneway and id ~= nil and is_oneway(id) then
-        kind = ONEWAY
-      elseif is_solid then
-        if id ~= nil and is_solid(id) then kind = SOLID end
-      elseif id and id ~= 0 then
-        kind = SOLID
-      end
-      kinds[base + col] = kind
-    end
-  end
-  return kinds
-end
-
 ---A tile layer read from the caller's grid; the options have been checked.
 ---@param source any
 ---@param tile_width number
@@ -183,14 +44,14 @@ end
 ---@param level integer where grid errors point
 ---@return budge.TileLayer
 function layer.new(source, tile_width, tile_height, opts, level)
-  local data, cols, rows = layer.measure(source, opts.width, level + 1)
+  local data, cols, rows = measure(source, opts.width, level + 1)
   local tiles = {
     x = opts.x or 0, y = opts.y or 0, tile_width = tile_width, tile_height = tile_height,
     cols = cols, rows = rows, grid = source,
     _kinds = {}, _inverse_width = 1 / tile_width, _inverse_height = 1 / tile_height,
     _width = opts.width, _is_solid = opts.is_solid, _is_oneway = opts.is_oneway,
   }
-  layer.read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds)
+  read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds)
   return tiles
 end
 
@@ -200,12 +61,12 @@ end
 ---@param level integer
 function layer.reread(tiles, level)
   local source = tiles.grid
-  local data, cols, rows = layer.measure(source, tiles._width, level + 1)
+  local data, cols, rows = measure(source, tiles._width, level + 1)
   if cols ~= tiles.cols or rows ~= tiles.rows then
     error(format("grid changed size from %dx%d to %dx%d: remove the layer and add it again",
       tiles.cols, tiles.rows, cols, rows), level + 1)
   end
-  layer.read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds)
+  read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds)
 end
 
 ---The tile indices (0-based) whose span meets the open interval (from, to), clamped to
@@ -285,26 +146,6 @@ function layer.touches(tiles, x, y, width, height, set)
   return found
 end
 
----Fraction of the segment (x1, y1) + (dx, dy) * t, 0 <= t <= 1, at which it enters the
----open box, or nil if it never does.
----@param x1 number
----@param y1 number
----@param dx number
----@param dy number
----@param bx number
----@param by number
----@param bw number
----@param bh number
----@return number?
-function layer.segment_enter(x1, y1, dx, dy, bx, by, bw, bh)
-  local enter, leave = clip_axis(x1, dx, bx, bx + bw, 0, 1, true)
-  if enter == nil then return nil end
-  enter, leave = clip_axis(y1, dy, by, by + bh, enter, leave, true)
-  if enter == nil then return nil end
-  if enter < leave or (enter == leave and dx == 0 and dy == 0) then return enter end
-  return nil
-end
-local segment_enter = layer.segment_enter
 
 ---Fraction of the segment at which it first enters a non-empty tile, or nil. Walks the
 ---part of the segment inside the layer in pieces no longer than a tile, nearest first,

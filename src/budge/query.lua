@@ -6,13 +6,14 @@
 -- pairs(). With a caller-given `out` a query allocates nothing once the world is warm.
 
 local here = (...):match("^(.*)%.[^%.]+$")
+local sweep = require(here .. ".sweep")
 local layer = require(here .. ".layer")
 local solids = require(here .. ".solids")
 local actors = require(here .. ".actors")
 
 local sort = table.sort
-local segment_enter, segment_first, touches = layer.segment_enter, layer.segment_first,
-  layer.touches
+local segment_enter = sweep.segment_enter
+local segment_first, touches = layer.segment_first, layer.touches
 
 local query = {}
 

@@ -123,6 +123,26 @@ function sweep.before(face, size)
   return position
 end
 
+---Fraction of the segment (x1, y1) + (dx, dy) * t, 0 <= t <= 1, at which it enters the
+---open box, or nil if it never does.
+---@param x1 number
+---@param y1 number
+---@param dx number
+---@param dy number
+---@param bx number
+---@param by number
+---@param bw number
+---@param bh number
+---@return number?
+function sweep.segment_enter(x1, y1, dx, dy, bx, by, bw, bh)
+  local enter, leave = sweep.clip_axis(x1, dx, bx, bx + bw, 0, 1, true)
+  if enter == nil then return nil end
+  enter, leave = sweep.clip_axis(y1, dy, by, by + bh, enter, leave, true)
+  if enter == nil then return nil end
+  if enter < leave or (enter == leave and dx == 0 and dy == 0) then return enter end
+  return nil
+end
+
 -- The axis rules: where a box moving along one axis stops against one candidate.
 -- `pos` and `edge` are the box's low and high coordinates on that axis, `reach` the
 -- leading edge's coordinate after the full move. The caller has checked that the

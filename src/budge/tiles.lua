@@ -21,7 +21,7 @@
 local here = (...):match("^(.*)%.[^%.]+$")
 local box = require(here .. ".box")
 local fatcross = require(here .. ".fatcross")
-local layer = require(here .. ".layer")
+local tilegrid = require(here .. ".tilegrid")
 
 local describe, is_finite = box.describe, box.is_finite
 local format, error = string.format, error
@@ -92,7 +92,7 @@ local function face_open(kinds, cols, rows, rect, dc, dr, open_edges)
   if col0 < 1 or col0 > cols or row0 < 1 or row0 > rows then return open_edges end
   for r = row0, row1 do
     for c = col0, col1 do
-      if kinds[(r - 1) * cols + c] ~= layer.SOLID then return true end
+      if kinds[(r - 1) * cols + c] ~= tilegrid.SOLID then return true end
     end
   end
   return false
@@ -114,20 +114,20 @@ end
 ---@param opts? budge.MergeOptions
 ---@return budge.Box[] boxes
 function tiles.merge(source, tile_width, tile_height, opts)
-  opts = layer.check_options(tile_width, tile_height, opts, 2)
+  opts = tilegrid.check_options(tile_width, tile_height, opts, 2)
   local max_speed = opts.max_speed
   if max_speed ~= nil and (not is_finite(max_speed) or max_speed <= 0) then
     error(format("opts.max_speed must be a finite number > 0 or nil, got %s",
       describe(max_speed)), 2)
   end
-  local data, cols, rows = layer.measure(source, opts.width, 2)
-  local kinds = layer.read(source, data, cols, rows, opts.is_solid, opts.is_oneway, {})
+  local data, cols, rows = tilegrid.measure(source, opts.width, 2)
+  local kinds = tilegrid.read(source, data, cols, rows, opts.is_solid, opts.is_oneway, {})
   local origin_x, origin_y, open_edges = opts.x or 0, opts.y or 0, opts.open_edges == true
 
-  local by_rows = greedy(kinds, cols, rows, layer.SOLID, true, false)
-  local by_cols = greedy(kinds, cols, rows, layer.SOLID, false, false)
+  local by_rows = greedy(kinds, cols, rows, tilegrid.SOLID, true, false)
+  local by_cols = greedy(kinds, cols, rows, tilegrid.SOLID, false, false)
   local rects = #by_cols < #by_rows and by_cols or by_rows
-  local oneway = greedy(kinds, cols, rows, layer.ONEWAY, true, true)
+  local oneway = greedy(kinds, cols, rows, tilegrid.ONEWAY, true, true)
 
   local boxes = {}
   for _, rect in ipairs(rects) do
