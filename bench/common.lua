@@ -1,15 +1,6 @@
--- Helpers shared by the benchmarks: a portable PRNG, timing, medians, machine facts.
+-- Helpers shared by the benchmarks: medians, interpreter and machine facts, options.
+-- (The portable random generator they share with the specs is fixtures/random.lua.)
 local common = {}
-
----Park-Miller minimal standard generator: the same sequence on every interpreter.
-function common.new_random(seed)
-  local state = seed
-  return function(low, high)
-    state = (state * 16807) % 2147483647
-    if low == nil then return state / 2147483647 end
-    return low + state % (high - low + 1)
-  end
-end
 
 function common.median(values)
   local sorted = {}

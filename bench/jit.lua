@@ -3,7 +3,7 @@
 --
 --   luajit bench/jit.lua [--frames 3000]
 --
--- Two scenes: the platformer level (bench/levels.lua) with 7 runners that run and jump
+-- Two scenes: the platformer level (fixtures/levels.lua) with 7 runners that run and jump
 -- and 2 moving platforms, and the world bench's crowd of 1000 actors. Each runs twice in
 -- a fresh process state: once with the default budget, counting flushes (LuaJIT throws
 -- every trace away when the budget runs out) and aborted traces; once with a budget too
@@ -16,8 +16,9 @@ if not jit then
 end
 local util = require("jit.util")
 local common = require("bench.common")
-local levels = require("bench.levels")
-local scene = require("bench.scene")
+local levels = require("fixtures.levels")
+local runner_logic = require("examples.demo.runner")
+local scene = require("fixtures.scene")
 
 local options = common.options(arg, {frames = 3000, why = 0})
 local vmdef = require("jit.vmdef")
@@ -45,10 +46,10 @@ local function platformer(budge)
   local ferry = world:add_solid({x = 176, y = 400, width = 48, height = 8})
   local runners = {}
   for i = 1, 7 do
-    runners[i] = world:add_actor(levels.new_runner(40 + i * 96, 40, i % 2 == 0 and 1 or -1,
+    runners[i] = world:add_actor(runner_logic.new_runner(40 + i * 96, 40, i % 2 == 0 and 1 or -1,
       23 + i * 6))
   end
-  local input, step, move = levels.runner_input, levels.step_runner, world.move
+  local input, step, move = runner_logic.runner_input, runner_logic.step_runner, world.move
   return function(frame)
     world:move_solid(lift, 0, (frame % 240 < 120) and -1 or 1)
     world:move_solid(ferry, (frame % 128 < 64) and 1 or -1, 0)
@@ -65,7 +66,7 @@ local function crowd(budge)
   local world = budge.new_world()
   world:add_tiles(grid, scene.TILE, scene.TILE)
   local actors = {}
-  for i, start in ipairs(scene.make_actors(grid, common.new_random(13345), 1000)) do
+  for i, start in ipairs(scene.make_actors(grid, require("fixtures.random").new(13345), 1000)) do
     actors[i] = world:add_actor({x = start.x, y = start.y, width = scene.SIZE,
       height = scene.SIZE, dx = start.dx, dy = start.dy})
   end

@@ -9,7 +9,7 @@
 package.path = "./src/?.lua;./src/?/init.lua;./?.lua;" .. package.path
 local budge = require("budge")
 local common = require("bench.common")
-local scene = require("bench.scene")
+local scene = require("fixtures.scene")
 
 local MAP, TILE = 200, 16
 local options = common.options(arg, {platforms = 100, actors = 1000, frames = 600, runs = 3,

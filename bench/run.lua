@@ -2,7 +2,7 @@
 --
 --   lua bench/run.lua [--runs 5] [--frames 200] [--actors 1000] [--level full]
 --
--- Accuracy: the share of the scenario catalogue (bench/scenarios.lua) each method gets
+-- Accuracy: the share of the scenario catalogue (fixtures/scenarios.lua) each method gets
 -- right, with its failures counted by kind. Cost: ns per move on the world bench scene
 -- (bench/world.lua's tile map, 1000 actors) with that method, median of the runs.
 -- Writes bench/results/<interpreter>.csv, bench/results/scenes-<interpreter>.csv and
@@ -10,7 +10,7 @@
 package.path = "./src/?.lua;./src/?/init.lua;./?.lua;" .. package.path
 local budge = require("budge")
 local common = require("bench.common")
-local scenarios = require("bench.scenarios")
+local scenarios = require("fixtures.scenarios")
 local world_bench = require("bench.world")
 
 local options = common.options(arg, {runs = 5, frames = 200, actors = 1000, level = "full",
@@ -44,7 +44,7 @@ end
 
 -- cost, per method, on the world bench scene
 local grid = world_bench.make_scene(options.seed)
-local starts = world_bench.make_actors(grid, common.new_random(options.seed + options.actors),
+local starts = world_bench.make_actors(grid, require("fixtures.random").new(options.seed + options.actors),
   options.actors)
 local cost = {}
 for _, method in ipairs(scenarios.METHODS) do cost[method] = {} end

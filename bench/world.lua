@@ -10,11 +10,14 @@
 -- against the tile array (the speed limit for this scene). Reports ns per actor
 -- per frame (median of the runs), the ratios a/c and b/c, and KB allocated per frame
 -- (GC stopped, after a warm-up). Positions after the run must agree across a, b and c.
-package.path = "./src/?.lua;./src/?/init.lua;./?.lua;" .. package.path
+if ... ~= "bench.world" then -- run as a program; bench/run.lua requires it as a module
+  package.path = "./src/?.lua;./src/?/init.lua;./?.lua;" .. package.path
+end
 local budge = require("budge")
 local common = require("bench.common")
+local new_random = require("fixtures.random").new
 
-local scene = require("bench.scene")
+local scene = require("fixtures.scene")
 local MAP, TILE, SIZE = scene.MAP, scene.TILE, scene.SIZE
 local make_scene, make_actors = scene.make_scene, scene.make_actors
 
@@ -169,7 +172,7 @@ local has_bump = pcall(require, "bump")
 local ways = {"tiles", "boxes", "merged", "reference"}
 if has_bump then ways[#ways + 1] = "bump" end
 if options.profile ~= "" then -- one way alone, for luajit -jp
-  local starts = make_actors(grid, common.new_random(options.seed + 1000), 1000)
+  local starts = make_actors(grid, new_random(options.seed + 1000), 1000)
   print(options.profile, ("%.0f ns per move"):format(run(options.profile, grid, starts, options.frames)))
   return
 end
@@ -186,7 +189,7 @@ local csv = {"interpreter,actors,frames,runs,tiles_ns,boxes_ns,merged_ns,referen
   .. "tiles_kb_per_frame,boxes_kb_per_frame,bump_ns"}
 for count in tostring(options.actors):gmatch("%d+") do
   count = tonumber(count)
-  local starts = make_actors(grid, common.new_random(options.seed + count), count)
+  local starts = make_actors(grid, new_random(options.seed + count), count)
   local times, memory, finals = {}, {}, {}
   for _, way in ipairs(ways) do times[way] = {}; memory[way] = 0 end
   for _ = 1, options.runs do

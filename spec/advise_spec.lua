@@ -1,5 +1,5 @@
 local budge = require("budge")
-local levels = require("bench.levels")
+local levels = require("fixtures.levels")
 
 local function box(x, y, width, height, wall_type)
   return {x = x, y = y, width = width, height = height, wall_type = wall_type}
@@ -127,7 +127,7 @@ describe("budge.advise", function()
   end)
 
   it("handles the 5586 merged boxes of the bench map, each face against its neighbours", function()
-    local map = require("bench.scene").make_scene(12345)
+    local map = require("fixtures.scene").make_scene(12345)
     local merged = budge.tiles.merge(map, 16, 16, {max_speed = 6})
     local method, reasons = budge.advise({solids = merged,
       bounds = {x = 0, y = 0, width = 3200, height = 3200},

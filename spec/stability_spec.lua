@@ -1,7 +1,7 @@
 -- Where each method fails, in the world: the envelopes pinned at their edges, and the
--- whole scenario catalogue (bench/scenarios.lua) replayed with its failures counted.
+-- whole scenario catalogue (fixtures/scenarios.lua) replayed with its failures counted.
 -- The counts are pinned: a change in any method's behaviour moves them.
-local scenarios = require("bench.scenarios")
+local scenarios = require("fixtures.scenarios")
 
 local EDGE = 1 / 64
 

@@ -1,7 +1,7 @@
 local budge = require("budge")
-local levels = require("bench.levels")
-local scene = require("bench.scene")
-local new_random = require("bench.common").new_random
+local levels = require("fixtures.levels")
+local scene = require("fixtures.scene")
+local new_random = require("fixtures.random").new
 
 local merge = budge.tiles.merge
 

@@ -6,7 +6,7 @@ local OPERATIONS = 100000
 
 -- Park-Miller, shared with the benches: the same sequence on every interpreter
 -- (math.random is not).
-local new_random = require("bench.common").new_random
+local new_random = require("fixtures.random").new
 
 local METHODS = {"axis_sweep", "swept", "seed", "wall_type", "min_axis", "fat_cross", "auto"}
 local CONTINUOUS = {axis_sweep = true, swept = true, auto = true}

@@ -2,9 +2,10 @@
 -- at a fixed 1/60 s, draws itself, and says whether the run showed what it should:
 -- the continuous methods never fail anywhere; the discrete ones fail where the README's
 -- envelopes say they do.
-local levels = require("bench.levels")
-local bench_scene = require("bench.scene")
+local levels = require("fixtures.levels")
+local bench_scene = require("fixtures.scene")
 local Lab = require("lab")
+local runner_logic = require("runner")
 
 local scenes = {}
 
@@ -97,7 +98,7 @@ local function draw_actor(gfx, actor, color)
 end
 
 -- 1. the platformer -------------------------------------------------------------------
-local MAX_FALL = levels.MAX_FALL
+local MAX_FALL = runner_logic.MAX_FALL
 
 scenes[1] = {
   name = "platformer",
@@ -110,12 +111,12 @@ scenes[1] = {
     -- two moving platforms: one across the pit, one lift
     state.platforms[1] = {solid = lab:add_solid(box(176, 400, 48, 8)), dx = 1, range = {176, 240}}
     state.platforms[2] = {solid = lab:add_solid(box(704, 240, 48, 8)), dy = -1, range = {160, 400}}
-    state.player = lab:add_actor(levels.new_runner(start_x + 2, start_y + 2, 1, 37))
+    state.player = lab:add_actor(runner_logic.new_runner(start_x + 2, start_y + 2, 1, 37))
     state.runners = {state.player}
     local starts = {{100, 40, 1, 29}, {300, 100, -1, 41}, {520, 100, 1, 53}, {680, 300, -1, 31},
       {420, 300, 1, 47}, {60, 200, 1, 23}}
     for _, s in ipairs(starts) do
-      state.runners[#state.runners + 1] = lab:add_actor(levels.new_runner(s[1], s[2], s[3], s[4]))
+      state.runners[#state.runners + 1] = lab:add_actor(runner_logic.new_runner(s[1], s[2], s[3], s[4]))
     end
     return state
   end,
@@ -138,9 +139,9 @@ scenes[1] = {
       if i == 1 and not scripted then
         left, right, jump = input.left, input.right, input.jump
       else
-        left, right, jump = levels.runner_input(runner, state.frame)
+        left, right, jump = runner_logic.runner_input(runner, state.frame)
       end
-      remember_contacts(runner, levels.step_runner(runner, left, right, jump, lab.move, lab))
+      remember_contacts(runner, runner_logic.step_runner(runner, left, right, jump, lab.move, lab))
     end
   end,
   draw = function(state, lab, gfx)
@@ -362,7 +363,7 @@ scenes[5] = {
       rows[r] = {}
       for c = 1, #grid[r] do rows[r][c] = grid[r][c] and 1 or 0 end
     end
-    local starts = bench_scene.make_actors(grid, require("bench.common").new_random(13345), 1000)
+    local starts = bench_scene.make_actors(grid, require("fixtures.random").new(13345), 1000)
     local state = {rows = rows, actors = {}}
     lab:add_tiles(rows, bench_scene.TILE)
     for i, s in ipairs(starts) do
