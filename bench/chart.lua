@@ -1,8 +1,9 @@
 -- bench/chart.lua: draws the charts from bench/results/*.csv into docs/.
 --   docs/speed-vs-accuracy.svg  ns per move (log) against accuracy, per method and interpreter
 --   docs/envelopes.svg          largest safe speed against wall thickness, measured and analytic
-package.path = "./?.lua;" .. package.path
+package.path = "./src/?.lua;./src/?/init.lua;./?.lua;" .. package.path
 local svg = require("bench.svg")
+local budge = require("budge")
 
 local function parse_line(line)
   local fields, position = {}, 1
@@ -38,9 +39,11 @@ local function read_csv(path)
   return rows
 end
 
-local COLORS = {seed = "#d62728", wall_type = "#ff7f0e", fat_cross = "#9467bd",
-  min_axis = "#8c564b", axis_sweep = "#2ca02c", swept = "#1f77b4", auto = "#17becf"}
-local METHOD_ORDER = {"seed", "wall_type", "fat_cross", "min_axis", "axis_sweep", "swept", "auto"}
+-- one colour per rung of the ladder, cheapest first (budge.METHODS' order)
+local PALETTE = {"#d62728", "#ff7f0e", "#9467bd", "#8c564b", "#2ca02c", "#1f77b4", "#17becf"}
+local METHOD_ORDER = budge.METHODS
+local COLORS = {}
+for i, method in ipairs(METHOD_ORDER) do COLORS[method] = PALETTE[i] end
 
 -- speed against accuracy -------------------------------------------------------------
 local series = {}

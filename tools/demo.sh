@@ -8,12 +8,15 @@ cd "$(dirname "$0")/.." || exit 2
 out=${1:-/tmp/budge-demo}
 FRAMES=180
 if [ -z "${BUDGE_IN_XVFB:-}" ]; then
-  sh tools/deps.sh love xvfb-run python3 || exit 2
+  sh tools/deps.sh love xvfb-run python3 lua5.4 || exit 2
   mkdir -p "$out"
   BUDGE_IN_XVFB=1 exec xvfb-run -a -s "-screen 0 1024x768x24" sh tools/demo.sh "$out"
 fi
 passed=0
 failed=0
+# the method names, as budge's registry lists them
+methods=$(lua5.4 -e 'package.path = "./src/?.lua;./src/?/init.lua;" .. package.path
+  print(table.concat(require("budge").METHODS, " "))') || exit 2
 # run NAME ARGS...: one scripted run; passes when it exits 0 and its PNG is a picture
 run() {
   name=$1; shift
@@ -29,7 +32,7 @@ run() {
   fi
 }
 for scene in platformer corners speed fatcross crowd; do
-  for method in seed wall_type fat_cross min_axis axis_sweep swept auto; do
+  for method in $methods; do
     run "$scene-$method" --scene "$scene" --method "$method" --frames "$FRAMES"
   done
 done

@@ -1,11 +1,12 @@
 -- The lab: moves actors with the method under test, times those moves, and judges each
 -- one against the geometry, so a failure is seen where it happens.
 --
--- A move fails when, afterwards, the actor
---   * overlaps a solid ("overlap"),
---   * went through one: its centre's straight path passes inside a solid ("tunnelled"),
---   * or was pushed out of its far side ("wrong side"),
+-- A move is judged by fixtures/judge.lua, the judge the specs and the scenario
+-- catalogue use: afterwards the actor
+--   * overlaps a solid ("residual overlap"),
 --   * was pushed across its path or back against it ("teleported"),
+--   * went through one, its centre's straight path passing inside a solid: pushed out of
+--     its far side ("wrong side") or not ("tunnelled"),
 --   * or (discrete methods) stopped somewhere the exact sweep did not ("snagged").
 -- The exact sweep's answer comes from moving the actor with axis_sweep first and putting
 -- it back (for the discrete methods only: the others are judged without it).
@@ -15,13 +16,14 @@
 -- moves of one frame in a tight loop, a few times over, and subtracts the same loop
 -- without the moves; the HUD shows the median of the recent samples.
 local budge = require("budge")
+local judge = require("fixtures.judge")
 
 local Lab = {}
 Lab.__index = Lab
 
-Lab.METHODS = {"seed", "wall_type", "fat_cross", "min_axis", "axis_sweep", "swept", "auto"}
-Lab.CONTINUOUS = {axis_sweep = true, swept = true, auto = true}
-Lab.KINDS = {"tunnelled", "wrong side", "overlap", "snagged", "teleported"}
+Lab.METHODS = budge.METHODS
+Lab.CONTINUOUS = budge.CONTINUOUS
+Lab.KINDS = judge.KINDS
 
 local EPSILON = 1e-6
 local MARK_FRAMES = 90
@@ -32,11 +34,24 @@ local clock = os.clock
 if love and love.timer then clock = love.timer.getTime end
 
 function Lab.new(method)
-  return setmetatable({
+  local lab
+  lab = setmetatable({
     world = budge.new_world(), method = method, solids = {}, layers = {},
     moves = 0, failures = {}, total_failures = 0, marks = {},
     frame_moves = {}, frame_count = 0, samples = {}, ticks = 0,
   }, Lab)
+  -- what the judge asks of the scene: the lab's solids and tile layers
+  lab.scene = {
+    eps = EPSILON,
+    overlaps = function(x, y, width, height) return lab:rect_blocked(x, y, width, height) end,
+    through = function(x0, y0, x, y, width, height, pushed)
+      if lab:centre_path_blocked(x0 + width / 2, y0 + height / 2, x + width / 2, y + height / 2) then
+        return pushed and "wrong side" or "tunnelled"
+      end
+      return nil
+    end,
+  }
+  return lab
 end
 
 -- The scene tells the lab what is solid: boxes (not oneway) and tile layers.
@@ -80,7 +95,7 @@ function Lab:rect_blocked(x, y, width, height)
   return false
 end
 
-local function centre_path_blocked(self, x0, y0, x1, y1)
+function Lab:centre_path_blocked(x0, y0, x1, y1)
   local length = math.max(math.abs(x1 - x0), math.abs(y1 - y0))
   local steps = math.ceil(length * 2)
   for i = 1, steps - 1 do
@@ -118,19 +133,9 @@ function Lab:move(actor, dx, dy)
   record.actor, record.x, record.y, record.dx, record.dy = actor, x0, y0, dx, dy
   self.frame_moves[count], self.frame_count = record, count
   if blocked_before then return x, y, n, hits end -- already inside: judged at the last move
-  local moved_x, moved_y = x - x0, y - y0
-  local kind
-  if self:rect_blocked(x, y, actor.width, actor.height) then
-    kind = "overlap"
-  elseif moved_x * dx < -EPSILON or moved_y * dy < -EPSILON
-      or (dx == 0 and math.abs(moved_x) > EPSILON) or (dy == 0 and math.abs(moved_y) > EPSILON) then
-    kind = "teleported" -- pushed back against its move, or across it
-  elseif centre_path_blocked(self, x0 + actor.width / 2, y0 + actor.height / 2,
-      x + actor.width / 2, y + actor.height / 2) then
-    -- through a solid: passed it untouched, or pushed out of its far side
-    local pushed = math.abs(moved_x - dx) > EPSILON or math.abs(moved_y - dy) > EPSILON
-    kind = pushed and "wrong side" or "tunnelled"
-  elseif discrete and (math.abs(x - reference_x) > 0.5 or math.abs(y - reference_y) > 0.5) then
+  local kind = judge.move(self.scene, x0, y0, actor.width, actor.height, dx, dy, x, y)
+  if kind == nil and discrete
+    and (math.abs(x - reference_x) > 0.5 or math.abs(y - reference_y) > 0.5) then
     kind = "snagged"
   end
   if kind then self:fail(kind, actor) end

@@ -25,7 +25,7 @@ local scenes = require("scenes")
 
 local DT = 1 / 60
 local KIND_COLORS = {
-  tunnelled = {1, 0.2, 0.2}, ["wrong side"] = {1, 0.2, 0.8}, overlap = {1, 0.5, 0},
+  tunnelled = {1, 0.2, 0.2}, ["wrong side"] = {1, 0.2, 0.8}, ["residual overlap"] = {1, 0.5, 0},
   snagged = {1, 1, 0.2}, teleported = {0.7, 0.3, 1},
 }
 

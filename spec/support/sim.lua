@@ -1,6 +1,7 @@
 -- Small simulations shared by the specs: a mover stepped through a list of solids with
 -- one of the discrete methods, and a single hit on a wall judged by where it ends up.
 local budge = require("budge")
+local judge = require("fixtures.judge")
 
 local sim = {}
 
@@ -43,12 +44,16 @@ local DIRECTIONS = {
   left = {1, 0}, right = {-1, 0}, top = {0, 1}, bottom = {0, -1},
 }
 
+-- The judge's kinds (fixtures/judge.lua) in the words of these specs.
+local VERDICTS = {["residual overlap"] = "inside", teleported = "teleported",
+  ["wrong side"] = "wrong side", tunnelled = "tunnelled"}
+
 ---A `size` x `size` mover starts touching `wall` on side `from` ("left" means it comes
 ---from the left, moving right), centred on the wall's span, and moves `speed` toward it
 ---in one step; then `method` resolves it. Returns the verdict: "correct" (back where it
 ---touched the wall), "wrong side" (pushed out through the far face), "teleported"
 ---(pushed along the other axis), "tunnelled" (no overlap after the step: it passed), or
----"inside" (still overlapping).
+---"inside" (still overlapping); fixtures/judge.lua judges the resolved step.
 function sim.hit(method, from, speed, wall, size, max_speed)
   local direction = DIRECTIONS[from]
   local mover = {width = size, height = size}
@@ -67,15 +72,13 @@ function sim.hit(method, from, speed, wall, size, max_speed)
     solids = {wall}
   end
   mover.prev_y = mover.y
-  mover.x, mover.y = mover.x + direction[1] * speed, mover.y + direction[2] * speed
+  local dx, dy = direction[1] * speed, direction[2] * speed
+  mover.x, mover.y = mover.x + dx, mover.y + dy
   if not budge.detect_collision(mover, wall) then return "tunnelled" end
   sim.step(mover, 0, 0, solids, method)
-  if mover.x == start_x and mover.y == start_y then return "correct" end
-  if budge.detect_collision(mover, wall) then return "inside" end
-  if direction[1] ~= 0 and mover.y == start_y or direction[2] ~= 0 and mover.x == start_x then
-    return "wrong side"
-  end
-  return "teleported"
+  local kind = judge.move(judge.wall(wall, direction[1], direction[2]), start_x, start_y, size,
+    size, dx, dy, mover.x, mover.y)
+  return kind and VERDICTS[kind] or "correct"
 end
 
 return sim

@@ -28,8 +28,11 @@ budge.new_world = world.new_world                -- world.lua
 budge.tiles = {merge = tiles.merge}              -- tiles.lua
 budge.advise = advise.advise                     -- advise.lua
 -- world:move's method names, cheapest rung of the ladder first (a copy: move.lua's
--- registry is the one place they are written)
-budge.METHODS = {}
-for i, name in ipairs(move.LADDER) do budge.METHODS[i] = name end
+-- registry is the one place they are written), and the set of those that never tunnel
+budge.METHODS, budge.CONTINUOUS = {}, {}
+for i, name in ipairs(move.LADDER) do
+  budge.METHODS[i] = name
+  budge.CONTINUOUS[name] = move.BY_NAME[name].continuous or nil
+end
 
 return budge
