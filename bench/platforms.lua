@@ -8,6 +8,7 @@
 -- frame after a warm-up (GC stopped), and crushes seen.
 package.path = "./src/?.lua;./src/?/init.lua;./?.lua;" .. package.path
 local budge = require("budge")
+local garbage = require("fixtures.garbage")
 local common = require("bench.common")
 local scene = require("fixtures.scene")
 
@@ -53,17 +54,9 @@ local function run()
       world:move(actor, actor.vx, 2)
     end
   end
-  for f = 1, 120 do frame(f) end
-  collectgarbage("collect")
-  collectgarbage("stop")
-  frame(1)
-  local memory = collectgarbage("count")
-  local started = os.clock()
-  for f = 1, options.frames do frame(f) end
-  local elapsed = os.clock() - started
-  local allocated = collectgarbage("count") - memory
-  collectgarbage("restart")
-  return elapsed * 1e9 / options.frames, allocated / options.frames, crushes
+  local bytes, elapsed = garbage.measure(frame, options.frames,
+    {warm = function() for f = 1, 120 do frame(f) end end})
+  return elapsed * 1e9 / options.frames, bytes / 1024 / options.frames, crushes
 end
 
 local per_frame, memory, crushes = {}, 0, 0

@@ -16,6 +16,7 @@ end
 local budge = require("budge")
 local common = require("bench.common")
 local new_random = require("fixtures.random").new
+local garbage = require("fixtures.garbage")
 
 local scene = require("fixtures.scene")
 local MAP, TILE, SIZE = scene.MAP, scene.TILE, scene.SIZE
@@ -147,18 +148,10 @@ end
 -- One timed run: warm-up frames, then `frames` frames with the GC stopped.
 local function run(way, grid, starts, frames, method)
   local actors, step = setup(way, grid, starts, method)
-  for _ = 1, 20 do step() end
+  local bytes, elapsed = garbage.measure(step, frames,
+    {warm = function() for _ = 1, 20 do step() end end})
   collectgarbage("collect")
-  collectgarbage("stop")
-  step() -- Lua 5.4 shrinks the stack in a full collection; let it grow back
-  local memory = collectgarbage("count")
-  local started = os.clock()
-  for _ = 1, frames do step() end
-  local elapsed = os.clock() - started
-  local allocated = collectgarbage("count") - memory
-  collectgarbage("restart")
-  collectgarbage("collect")
-  return elapsed * 1e9 / (frames * #actors), allocated / frames, actors
+  return elapsed * 1e9 / (frames * #actors), bytes / 1024 / frames, actors
 end
 
 if ... == "bench.world" then -- required by bench/run.lua: export the timing, run nothing

@@ -1,9 +1,7 @@
 local budge = require("budge")
 local levels = require("fixtures.levels")
 
-local function box(x, y, width, height, wall_type)
-  return {x = x, y = y, width = width, height = height, wall_type = wall_type}
-end
+local box = require("fixtures.box")
 
 local AXIS_SWEEP = "axis_sweep is enough at any speed: it moves x, then y, and stops at the "
   .. "first face (put the solids in a world); swept follows the exact diagonal at about 2.5 "

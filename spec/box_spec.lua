@@ -1,8 +1,6 @@
 local budge = require("budge")
 
-local function box(x, y, width, height, wall_type)
-  return {x = x, y = y, width = width, height = height, wall_type = wall_type}
-end
+local box = require("fixtures.box")
 
 -- The seed article's test, typo included, to show what the fix changes.
 local function article_detect(box_a, box_b)

@@ -2,7 +2,7 @@
 -- this file's name and the line of the call (error(msg, 2), never an inner line).
 local budge = require("budge")
 
-local function box(x, y, width, height) return {x = x, y = y, width = width, height = height} end
+local box = require("fixtures.box")
 
 -- Each case is a one-line function: its own line is the line the error must name. (No
 -- `return f()`: a tail call leaves no caller line for error() to name.)

@@ -1,9 +1,8 @@
 -- Moving solids: carry, push, crush (world:move_solid).
 local budge = require("budge")
 
-local function box(x, y, width, height, wall_type)
-  return {x = x, y = y, width = width, height = height, wall_type = wall_type}
-end
+local box = require("fixtures.box")
+local garbage = require("fixtures.garbage")
 
 describe("world:move_solid", function()
   it("takes a rider up and down an elevator, exactly on top every frame", function()
@@ -143,19 +142,9 @@ describe("world:move_solid", function()
         world:move(actors[i], 0, 1)
       end
     end
-    local jit = rawget(_G, "jit")
-    local jit_was_on = jit and jit.status() -- a `luajit -joff` run must stay off
-    if jit then jit.off(); jit.flush() end
-    for f = 1, 300 do frame(f) end
-    collectgarbage("collect")
-    collectgarbage("stop")
-    frame(1)
-    local before = collectgarbage("count")
-    for f = 1, 300 do frame(f) end
-    local after = collectgarbage("count")
-    collectgarbage("restart")
-    if jit_was_on then jit.on() end
-    assert.equal(0, (after - before) * 1024)
+    local bytes = garbage.measure(frame, 300, {jit_off = true,
+      warm = function() for f = 1, 300 do frame(f) end end})
+    assert.equal(0, bytes)
     local out, n = world:query_point(platforms[3].x + 1, platforms[3].y + 1)
     assert.same({1, platforms[3]}, {n, out[1]})
   end)

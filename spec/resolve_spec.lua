@@ -3,9 +3,7 @@ local sim = require("spec.support.sim")
 
 local EPS = 1 / 64 -- exact in binary, so "just outside" is one representable step
 
-local function box(x, y, width, height, wall_type)
-  return {x = x, y = y, width = width, height = height, wall_type = wall_type}
-end
+local box = require("fixtures.box")
 
 local function push(a, b, method)
   local dx, dy = budge.resolve_collision(a, b, method)

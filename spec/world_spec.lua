@@ -1,8 +1,7 @@
 local budge = require("budge")
 
-local function box(x, y, width, height, wall_type)
-  return {x = x, y = y, width = width, height = height, wall_type = wall_type}
-end
+local box = require("fixtures.box")
+local garbage = require("fixtures.garbage")
 
 local function position(world, actor, dx, dy, method)
   local x, y = world:move(actor, dx, dy, method)
@@ -388,22 +387,10 @@ describe("garbage", function()
     local function reset()
       for i = 1, #actors do actors[i].x, actors[i].y = 100 + i * 7, 100 + i * 5 end
     end
-    -- LuaJIT's trace compiler allocates in the same heap while it compiles; that is not
-    -- budge's garbage, so the JIT is off here (bench/world.lua measures with it on)
-    local jit = rawget(_G, "jit")
-    local jit_was_on = jit and jit.status() -- a `luajit -joff` run must stay off
-    if jit then jit.off(); jit.flush() end
-    for _ = 1, 3 do reset(); for f = 1, 200 do frame(f) end end -- every cell and record exists
-    collectgarbage("collect")
-    collectgarbage("stop")
-    reset()
-    frame(1) -- Lua 5.4 shrinks the stack in a full collection: let it grow back first
-    reset()
-    local before = collectgarbage("count")
-    for f = 1, 200 do frame(f) end
-    local after = collectgarbage("count")
-    collectgarbage("restart")
-    if jit_was_on then jit.on() end
-    assert.equal(0, (after - before) * 1024)
+    -- the JIT is off here (its compiler's memory is not budge's garbage); bench/world.lua
+    -- measures with it on
+    local bytes = garbage.measure(frame, 200, {jit_off = true, reset = reset,
+      warm = function() for _ = 1, 3 do reset(); for f = 1, 200 do frame(f) end end end})
+    assert.equal(0, bytes)
   end)
 end)

@@ -9,9 +9,7 @@ local runner_logic = require("runner")
 
 local scenes = {}
 
-local function box(x, y, width, height, wall_type)
-  return {x = x, y = y, width = width, height = height, wall_type = wall_type}
-end
+local box = require("fixtures.box")
 
 -- verdict helpers ---------------------------------------------------------------------
 local function continuous_clean(lab)
