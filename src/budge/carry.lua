@@ -32,24 +32,16 @@ local function shove(world, record, is_x, target)
   local probe = world._probe
   probe.actor, probe.filter = actor, filter
   local x, y = actor.x, actor.y
-  local arrived
-  if is_x then
-    if target ~= x then
-      x = axis_phase(world, true, x, y, target - x)
-      if world._n_hits == 0 then x = target end
-    end
-    arrived = x == target
-  else
-    if target ~= y then
-      y = axis_phase(world, false, x, y, target - y)
-      if world._n_hits == 0 then y = target end
-    end
-    arrived = y == target
+  local pos = is_x and x or y
+  if target ~= pos then
+    pos = axis_phase(world, is_x, x, y, target - pos)
+    if world._n_hits == 0 then pos = target end
+    if is_x then x = pos else y = pos end
   end
   probe.actor, probe.filter = nil, nil
   actor.x, actor.y = x, y
   actors.rehash_one(world, record)
-  return arrived
+  return pos == target
 end
 
 local function crush(world, record)

@@ -16,11 +16,24 @@ local gather_layer = layer.gather
 
 local solids = {}
 
-local function grow_bounds(world, x, y, x1, y1)
-  if x < world._min_x then world._min_x = x end
-  if y < world._min_y then world._min_y = y end
-  if x1 > world._max_x then world._max_x = x1 end
-  if y1 > world._max_y then world._max_y = y1 end
+---A rectangle that only grows: the bounds of what was ever added to it.
+---@class budge.Bounds
+---@field min_x number
+---@field min_y number
+---@field max_x number
+---@field max_y number
+
+---Empty bounds (min above max).
+---@return budge.Bounds
+function solids.new_bounds()
+  return {min_x = math.huge, min_y = math.huge, max_x = -math.huge, max_y = -math.huge}
+end
+
+local function grow(bounds, x, y, x1, y1)
+  if x < bounds.min_x then bounds.min_x = x end
+  if y < bounds.min_y then bounds.min_y = y end
+  if x1 > bounds.max_x then bounds.max_x = x1 end
+  if y1 > bounds.max_y then bounds.max_y = y1 end
 end
 
 ---Puts a solid's record into the hash with a fresh copy of its box and grows the bounds.
@@ -34,11 +47,8 @@ function solids.insert(world, record)
   world._solids:insert(record, x, y, width, height)
   world._solid_count = world._solid_count + 1
   local x1, y1 = x + width, y + height
-  grow_bounds(world, x, y, x1, y1)
-  if x < world._box_min_x then world._box_min_x = x end
-  if y < world._box_min_y then world._box_min_y = y end
-  if x1 > world._box_max_x then world._box_max_x = x1 end
-  if y1 > world._box_max_y then world._box_max_y = y1 end
+  grow(world._bounds, x, y, x1, y1)
+  grow(world._box_bounds, x, y, x1, y1)
 end
 
 ---Takes a solid's record out of the hash.
@@ -55,7 +65,7 @@ end
 function solids.add_layer(world, tiles)
   local layers = world._layers
   layers[#layers + 1] = tiles
-  grow_bounds(world, tiles.x, tiles.y, tiles.x + tiles.cols * tiles.tile_width,
+  grow(world._bounds, tiles.x, tiles.y, tiles.x + tiles.cols * tiles.tile_width,
     tiles.y + tiles.rows * tiles.tile_height)
 end
 
@@ -78,10 +88,11 @@ end
 ---@param y1 number
 ---@return number x, number y, number x1, number y1
 function solids.clip_to_boxes(world, x, y, x1, y1)
-  if x < world._box_min_x then x = world._box_min_x end
-  if y < world._box_min_y then y = world._box_min_y end
-  if x1 > world._box_max_x then x1 = world._box_max_x end
-  if y1 > world._box_max_y then y1 = world._box_max_y end
+  local bounds = world._box_bounds
+  if x < bounds.min_x then x = bounds.min_x end
+  if y < bounds.min_y then y = bounds.min_y end
+  if x1 > bounds.max_x then x1 = bounds.max_x end
+  if y1 > bounds.max_y then y1 = bounds.max_y end
   return x, y, x1, y1
 end
 local clip_to_boxes = solids.clip_to_boxes
@@ -97,9 +108,10 @@ local clip_to_boxes = solids.clip_to_boxes
 ---@param dy number
 ---@return number? enter, number? leave
 function solids.clip_to_bounds(world, x, y, width, height, dx, dy)
-  local enter, leave = clip_axis(x, dx, world._min_x - width, world._max_x, 0, 1, false)
+  local bounds = world._bounds
+  local enter, leave = clip_axis(x, dx, bounds.min_x - width, bounds.max_x, 0, 1, false)
   if enter == nil then return nil, nil end
-  enter, leave = clip_axis(y, dy, world._min_y - height, world._max_y, enter, leave, false)
+  enter, leave = clip_axis(y, dy, bounds.min_y - height, bounds.max_y, enter, leave, false)
   if enter == nil or enter > leave then return nil, nil end
   return enter, leave
 end

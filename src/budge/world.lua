@@ -26,7 +26,6 @@ local check_box, check_wall_type, check_number = box.check_box, box.check_wall_t
   box.check_number
 local describe, is_finite = box.describe, box.is_finite
 local METHOD, NAME_LIST = move.BY_NAME, move.NAME_LIST
-local HUGE = math.huge
 local format, error, type = string.format, error, type
 
 local SOLID, ACTOR, TILES = "solid", "actor", "tiles"
@@ -53,14 +52,8 @@ local world = {}
 ---@field package _solids budge.Hash the solid boxes
 ---@field package _solid_count integer how many solid boxes
 ---@field package _layers budge.TileLayer[] the tile layers, in the order they were added
----@field package _min_x number bounds of everything solid ever added
----@field package _min_y number
----@field package _max_x number
----@field package _max_y number
----@field package _box_min_x number bounds of the hashed solid boxes ever added
----@field package _box_min_y number
----@field package _box_max_x number
----@field package _box_max_y number
+---@field package _bounds budge.Bounds of everything solid ever added
+---@field package _box_bounds budge.Bounds of the hashed solid boxes ever added
 ---@field package _actors budge.Hash the actors, brought up to date lazily
 ---@field package _actor_list budge.Record[] the actors' records, in the world's actor order
 ---@field package _dirty budge.Record[] actors moved since the last rehash
@@ -108,8 +101,7 @@ function world.new_world(opts)
     cell_size = cell_size,
     _records = {}, _next_id = 0,
     _solids = hash.new(cell_size), _solid_count = 0, _layers = {},
-    _min_x = HUGE, _min_y = HUGE, _max_x = -HUGE, _max_y = -HUGE,
-    _box_min_x = HUGE, _box_min_y = HUGE, _box_max_x = -HUGE, _box_max_y = -HUGE,
+    _bounds = solids.new_bounds(), _box_bounds = solids.new_bounds(),
     _actors = hash.new(cell_size), _actor_list = {}, _dirty = {}, _n_dirty = 0,
     _hits = {}, _n_hits = 0, _round = 1,
     _probe = sweep.new_probe(),
