@@ -43,6 +43,8 @@ end
 local describe = box.describe
 
 ---True when `value` is a number that is neither NaN nor infinite.
+---@param value any
+---@return boolean
 function box.is_finite(value)
   return type(value) == "number" and value == value and value ~= HUGE and value ~= -HUGE
 end
@@ -50,6 +52,9 @@ local is_finite = box.is_finite
 
 ---Raises "<name> must be a finite number, got <value>" at `level` (1 = the caller of
 ---the function that calls check_number).
+---@param value any
+---@param name string the argument's name in the message
+---@param level integer
 function box.check_number(value, name, level)
   if not is_finite(value) then
     error(format("%s must be a finite number, got %s", name, describe(value)), level + 1)
@@ -58,6 +63,9 @@ end
 
 ---Checks that `b` is a box: a table whose x, y, width and height are finite numbers,
 ---width and height >= 0. `name` names the argument in the message.
+---@param b any
+---@param name string
+---@param level integer
 function box.check_box(b, name, level)
   if type(b) ~= "table" then
     error(format("%s must be a box table {x, y, width, height}, got %s", name, describe(b)),
@@ -86,6 +94,9 @@ end
 local WALL_TYPES = {horizontal = true, vertical = true, oneway = true}
 
 ---Checks `b.wall_type`: "horizontal", "vertical", "oneway" or nil.
+---@param b table a box whose other fields are checked
+---@param name string
+---@param level integer
 function box.check_wall_type(b, name, level)
   local wall_type = b.wall_type
   if wall_type ~= nil and not WALL_TYPES[wall_type] then
@@ -120,6 +131,8 @@ end
 ---Returns the x push (negative = left) and the y push (negative = up). On each axis the
 ---side is the one with less penetration, which is the side of a's centre; when the
 ---centres are level the push goes toward negative coordinates (left, up).
+---@param a budge.Box
+---@param b budge.Box
 ---@return number push_x, number push_y
 function box.penetration(a, b)
   local to_left = a.x + a.width - b.x        -- distance to move left to clear b

@@ -58,6 +58,9 @@ end
 ---The tall box goes first: a mover that overlaps both was coming down (or up) faster
 ---than the inset, and pushing it vertically first lands it on top instead of throwing
 ---it off the side; the wide box is then tested again with the mover where it now is.
+---@param mover budge.Box
+---@param tall budge.Box
+---@param wide budge.Box
 ---@return number dx, number dy
 function fatcross.resolve_pair(mover, tall, wide)
   local dx, dy = 0, 0

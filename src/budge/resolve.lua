@@ -91,6 +91,10 @@ resolve.push_horizontal = push_horizontal
 
 ---A oneway wall pushes only up, and only a box whose bottom was at or above the wall's
 ---top before this step (`prev_y` is a's y then). Returns the push, or 0, 0.
+---@param a budge.Box the mover
+---@param b budge.Box the oneway wall
+---@param prev_y number a's y before this step
+---@return number dx, number dy
 function resolve.oneway(a, b, prev_y)
   if prev_y + a.height <= b.y then
     return push_vertical(a, b, true)
@@ -102,6 +106,9 @@ local oneway = resolve.oneway
 local METHOD_NAMES = '"wall_type", "seed" or "min_axis"'
 
 ---Looks up a discrete rule by name for a public entry; errors at `level` if unknown.
+---@param method any
+---@param level integer
+---@return fun(a: budge.Box, b: budge.Box): number, number rule
 function resolve.rule(method, level)
   local rule = resolve.RULES[method]
   if not rule then
