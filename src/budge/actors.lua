@@ -3,8 +3,6 @@
 -- brought up to date lazily. A move only notes that its actor moved; the next query or
 -- moving solid rehashes the noted actors, so a frame of moves pays nothing for the hash.
 
-local sort = table.sort
-
 local actors = {}
 
 ---Adds an actor's record to the list and the hash.
@@ -68,14 +66,14 @@ function actors.rehash(world)
   world._n_dirty = 0
 end
 
-local function by_index(a, b) return a.index < b.index end
-
 ---The actor records whose boxes touch the rectangle (edges included), in the world's
----actor order, into world._near; returns their count. From the actor hash, brought up to
----date first.
----Speed: the hash, not a pass over the whole actor list: on bench/platforms.lua (100
----moving solids, 1000 actors) 2.3-3.2 -> 1.5-2.3 ms per frame on LuaJIT and 10.3 -> 3.7 ms
----on Lua 5.4 (make bench-world, 2026-12-01), the same actors in the same order.
+---actor order, into world._near; returns their count.
+---Speed: a straight pass over the actor list, one small loop. The actor hash (brought up
+---to date, collected, sorted by actor order) is faster on bench/platforms.lua (100 moving
+---solids, 1000 actors: LuaJIT 2.0-2.4 -> 1.0-2.3 ms per frame, Lua 5.4 10.3 -> 3.7 ms)
+---but its extra compiled paths take make bench-jit's platformer from 1-3 trace flushes to
+---4-7 at LuaJIT's default budget (0.02-0.04 -> 0.04-0.07 ms per frame), measured
+---2026-12-01: left for the issue on LuaJIT's budget.
 ---@param world budge.World
 ---@param x number
 ---@param y number
@@ -83,15 +81,11 @@ local function by_index(a, b) return a.index < b.index end
 ---@param height number
 ---@return integer n
 function actors.near(world, x, y, width, height)
-  actors.rehash(world)
-  local near = world._near
-  for i = 1, #near do near[i] = nil end
-  local count = world._actors:collect(x, y, width, height, near, 0)
+  local near, list = world._near, world._actor_list
   local x1, y1 = x + width, y + height
   local n = 0
-  for i = 1, count do
-    local record = near[i]
-    near[i] = nil
+  for i = 1, #list do
+    local record = list[i]
     local actor = record.item
     local ax, ay = actor.x, actor.y
     if ax <= x1 and x <= ax + actor.width and ay <= y1 and y <= ay + actor.height then
@@ -99,7 +93,7 @@ function actors.near(world, x, y, width, height)
       near[n] = record
     end
   end
-  sort(near, by_index)
+  for i = n + 1, #near do near[i] = nil end
   return n
 end
 
