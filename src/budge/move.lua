@@ -10,6 +10,11 @@
 --   model of the Celeste and TowerFall games, done with exact faces);
 -- * swept: the straight diagonal's time of impact, then a slide along what it met;
 -- * seed, wall_type, min_axis, fat_cross: the discrete rungs (move, then push out).
+--
+-- The moving actor and its filter travel in the world's probe (sweep.lua's
+-- budge.AxisProbe), set once per move, not down every call. Geometry still goes by
+-- positional numbers: the tile scans measured with their numbers in the probe instead
+-- cost nothing on LuaJIT and 4.7% on Lua 5.4 (layer.lua says how it was measured).
 
 local here = (...):match("^(.*)%.[^%.]+$")
 local box = require(here .. ".box")
@@ -138,8 +143,7 @@ end
 -- looks at a thin band of the world, until the first contact. Returns the position
 -- reached and, on a contact, whether x and y are blocked and the fraction travelled.
 local function advance(world, x, y, dx, dy, round)
-  local probe = world._probe
-  local actor, filter = probe.actor, probe.filter
+  local actor = world._probe.actor
   local width, height = actor.width, actor.height
   local enter, leave = clip_to_bounds(world, x, y, width, height, dx, dy)
   if enter == nil then return x + dx, y + dy, nil end
@@ -156,7 +160,7 @@ local function advance(world, x, y, dx, dy, round)
     local left = step_x < 0 and from_x + step_x or from_x
     local top = step_y < 0 and from_y + step_y or from_y
     local reach_x, reach_y = step_x < 0 and -step_x or step_x, step_y < 0 and -step_y or step_y
-    local set = gather(world, actor, filter, left, top, width + reach_x, height + reach_y)
+    local set = gather(world, left, top, width + reach_x, height + reach_y)
     local t = first_contact(set, x, y, from_x, from_y, width, height, step_x, step_y)
     if t then
       local touch, normal = set.touch, set.normal
@@ -235,7 +239,10 @@ local function move_discrete(world, actor, dx, dy, filter, entry)
   local prev_y = actor.y
   local x, y, width, height = actor.x + dx, actor.y + dy, actor.width, actor.height
   actor.x, actor.y = x, y
-  local set = gather(world, actor, filter, x, y, width, height)
+  local probe = world._probe
+  probe.actor, probe.filter = actor, filter
+  local set = gather(world, x, y, width, height)
+  probe.actor, probe.filter = nil, nil
   local n = set.n
   if n == 0 then return end
   local order = world._order

@@ -117,17 +117,18 @@ function solids.clip_to_bounds(world, x, y, width, height, dx, dy)
 end
 
 ---Fills the world's candidate set with the hashed solid boxes that touch the rectangle,
----skipping those the actor's filter refuses, and then with the tiles of every layer the
----filter accepts. Returns the set.
+---skipping those the moving actor's filter refuses, and then with the tiles of every
+---layer the filter accepts. The actor and its filter are the world's probe's (set by the
+---move). Returns the set.
 ---@param world budge.World
----@param actor table
----@param filter? fun(actor: table, other: any): any
 ---@param x number
 ---@param y number
 ---@param width number
 ---@param height number
 ---@return budge.CandidateSet
-function solids.gather(world, actor, filter, x, y, width, height)
+function solids.gather(world, x, y, width, height)
+  local probe = world._probe
+  local actor, filter = probe.actor, probe.filter
   local set = world._set
   local n = 0
   local bx, by, bx1, by1 = clip_to_boxes(world, x, y, x + width, y + height)
