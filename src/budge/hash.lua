@@ -247,5 +247,4 @@ function Hash:axis_stop(x, y, width, height, probe)
   end
 end
 
-hash.Hash = Hash
 return hash

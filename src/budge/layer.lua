@@ -88,7 +88,6 @@ local function span(origin, size, inverse, count, from, to)
   if last > count - 1 then last = count - 1 end
   return first, last
 end
-layer.span = span
 
 ---Appends to the candidate set the non-empty tiles that overlap the rectangle
 ---(strictly), row by row, each as a box with `other` = the layer and `id` its order,

@@ -86,8 +86,6 @@ resolve.RULES = {
   seed = by_seed,
   min_axis = by_min_axis,
 }
-resolve.push_vertical = push_vertical
-resolve.push_horizontal = push_horizontal
 
 ---A oneway wall pushes only up, and only a box whose bottom was at or above the wall's
 ---top before this step (`prev_y` is a's y then). Returns the push, or 0, 0.

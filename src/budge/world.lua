@@ -351,5 +351,4 @@ function World:query_segment(x1, y1, x2, y2, out, out_t)
   return query.segment(self, x1, y1, x2, y2, out, out_t)
 end
 
-world.World = World
 return world
