@@ -303,6 +303,31 @@ describe("world:move", function()
   end)
 end)
 
+describe("two worlds", function()
+  it("do not disturb each other when one's filter moves and queries the other", function()
+    -- a discrete method tunnels through the wall at 200 px: it moves 55
+    for method, distance in pairs({axis_sweep = 200, swept = 200, min_axis = 55}) do
+      local world, other = budge.new_world(), budge.new_world()
+      world:add_solid(box(100, 0, 16, 100))
+      world:add_tiles({{0, 0, 0, 0, 0, 1, 1}}, 16, 16, {x = 0, y = 200})
+      other:add_tiles({{1}}, 16, 16, {x = 300, y = 0})
+      local ghost = other:add_actor(box(200, 0, 8, 8))
+      local actor = world:add_actor(box(40, 40, 10, 10))
+      local calls = 0
+      actor.filter = function()
+        calls = calls + 1
+        other:move(ghost, 150, 0) -- stops at the other world's tile
+        other:query_rect(0, 0, 400, 400)
+        return true
+      end
+      assert.same({90, 40}, position(world, actor, distance, 0, method))
+      assert.same({90, 200 - 10}, position(world, actor, 0, 500, "axis_sweep"))
+      assert.is_true(calls >= 2)
+      assert.same({300 - 8, 0}, {ghost.x, ghost.y})
+    end
+  end)
+end)
+
 describe("queries", function()
   local world, a, b, actor, layer
   before_each(function()
