@@ -122,6 +122,21 @@ describe("world:add_tiles", function()
     assert.same({0, 0, 0}, {world:count()})
   end)
 
+  it("reads a flat array with opts.width and a Tiled layer as it reads grid[row][col]", function()
+    local ids = {0, 0, 0, 0, 1, 0}
+    for _, case in ipairs({
+      {{{0, 0, 0}, {0, 1, 0}}},
+      {ids, {width = 3}},
+      {{width = 3, height = 2, data = ids}},
+    }) do
+      local world = budge.new_world()
+      local layer = world:add_tiles(case[1], 16, 16, case[2])
+      assert.same({3, 2}, {layer.cols, layer.rows})
+      local actor = world:add_actor(box(18, -20, 8, 8))
+      assert.same({18, 8}, position(world, actor, 0, 100))
+    end
+  end)
+
   it("rereads its grid on update", function()
     local world = budge.new_world()
     local grid = {{false}}
