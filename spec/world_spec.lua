@@ -383,6 +383,57 @@ describe("queries", function()
     assert.same({{}, 0, {}}, {world:query_segment(10, -5, 10, 45)}) -- along an edge
   end)
 
+  it("query_segment finds a layer's first tile exactly where a brute force over every tile does", function()
+    local random = require("fixtures.random").new(4242)
+    local grid = {}
+    for row = 1, 30 do
+      grid[row] = {}
+      for col = 1, 40 do grid[row][col] = random() < 0.15 and 1 or 0 end
+    end
+    local tile_world = budge.new_world()
+    local tiles = tile_world:add_tiles(grid, 8, 16, {x = -12, y = 20})
+    -- the oracle: the open box of every solid tile, the smallest entry fraction
+    local function enter(x1, y1, dx, dy, bx, by, bw, bh)
+      local t0, t1 = 0, 1
+      for _, axis in ipairs({{x1, dx, bx, bw}, {y1, dy, by, bh}}) do
+        local p, d, low, size = axis[1], axis[2], axis[3], axis[4]
+        if d == 0 then
+          if not (low < p and p < low + size) then return nil end
+        else
+          local a, b = (low - p) / d, (low + size - p) / d
+          if a > b then a, b = b, a end
+          if a > t0 then t0 = a end
+          if b < t1 then t1 = b end
+        end
+      end
+      if t0 < t1 or (t0 == t1 and dx == 0 and dy == 0) then return t0 end
+      return nil
+    end
+    local out, out_t = {}, {}
+    for case = 1, 3000 do
+      -- dyadic ends on a 1/4 px grid, so segments along tile edges happen often
+      local x1, y1 = random(-80, 1360) / 4, random(0, 2080) / 4
+      local x2, y2 = random(-80, 1360) / 4, random(0, 2080) / 4
+      if case % 5 == 0 then y2 = y1 elseif case % 7 == 0 then x2 = x1 end
+      local best
+      for row = 1, 30 do
+        for col = 1, 40 do
+          if grid[row][col] == 1 then
+            local t = enter(x1, y1, x2 - x1, y2 - y1, -12 + (col - 1) * 8, 20 + (row - 1) * 16, 8, 16)
+            if t and (best == nil or t < best) then best = t end
+          end
+        end
+      end
+      local _, n = tile_world:query_segment(x1, y1, x2, y2, out, out_t)
+      local label = ("segment %g,%g -> %g,%g"):format(x1, y1, x2, y2)
+      if best then
+        assert.same({1, tiles, best}, {n, out[1], out_t[1]}, label)
+      else
+        assert.equal(0, n, label)
+      end
+    end
+  end)
+
   it("fills and trims a caller-given table", function()
     local out = {"stale", "stale", "stale", "stale", "stale"}
     local result, n = world:query_rect(-5, -5, 40, 20, out)
