@@ -400,10 +400,10 @@ describe("queries", function()
         if d == 0 then
           if not (low < p and p < low + size) then return nil end
         else
-          local a, b = (low - p) / d, (low + size - p) / d
-          if a > b then a, b = b, a end
-          if a > t0 then t0 = a end
-          if b < t1 then t1 = b end
+          local t_low, t_high = (low - p) / d, (low + size - p) / d
+          if t_low > t_high then t_low, t_high = t_high, t_low end
+          if t_low > t0 then t0 = t_low end
+          if t_high < t1 then t1 = t_high end
         end
       end
       if t0 < t1 or (t0 == t1 and dx == 0 and dy == 0) then return t0 end
