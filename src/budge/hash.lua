@@ -231,8 +231,12 @@ end
 ---@param height number
 ---@param probe budge.AxisProbe
 function Hash:axis_stop(x, y, width, height, probe)
-  local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
-  local stamp = self:next_stamp()
+  -- (cells_of and next_stamp written out: one call less per move on Lua 5.4)
+  local size = self.cell_size
+  local cx0, cy0 = floor(x / size), floor(y / size)
+  local cx1, cy1 = floor((x + width) / size), floor((y + height) / size)
+  local stamp = self._stamp + 1
+  self._stamp = stamp
   local cells = self._cells
   -- LuaJIT shaping: one flat loop over the cells, not two nested ones (one loop trace
   -- instead of one per level): 797 ns per move instead of 839 on merged boxes, 1015 and

@@ -268,7 +268,7 @@ function World:move(actor, dx, dy, method)
   end
   self._n_hits = 0
   entry.move(self, actor, dx, dy, filter, entry)
-  actors.moved(self, record)
+  if not record.dirty then actors.moved(self, record) end
   hits.sort(self)
   return actor.x, actor.y, self._n_hits, self._hits
 end
