@@ -34,7 +34,11 @@ local function shove(world, record, is_x, target)
   local x, y = actor.x, actor.y
   local pos = is_x and x or y
   if target ~= pos then
-    pos = axis_phase(world, is_x, x, y, target - pos)
+    if is_x then
+      pos = axis_phase(world, actor, filter, true, x, y, actor.width, actor.height, target - pos)
+    else
+      pos = axis_phase(world, actor, filter, false, y, x, actor.height, actor.width, target - pos)
+    end
     if world._n_hits == 0 then pos = target end
     if is_x then x = pos else y = pos end
   end

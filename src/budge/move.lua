@@ -12,9 +12,9 @@
 -- * seed, wall_type, min_axis, fat_cross: the discrete rungs (move, then push out).
 --
 -- The moving actor and its filter travel in the world's probe (sweep.lua's
--- budge.AxisProbe), set once per move, not down every call. Geometry still goes by
--- positional numbers: the tile scans measured with their numbers in the probe instead
--- cost nothing on LuaJIT and 4.7% on Lua 5.4 (layer.lua says how it was measured).
+-- budge.AxisProbe), set once per move, for the scans and the gathering that call the
+-- filter. Geometry still goes by positional numbers where that was measured faster: the
+-- tile scans (layer.lua) and axis_phase below say by how much.
 
 local here = (...):match("^(.*)%.[^%.]+$")
 local box = require(here .. ".box")
@@ -67,15 +67,16 @@ local function hash_phase(world, probe)
   end
 end
 
--- Moves the box at (x, y) (the size of probe.actor) by `delta` along one axis, up to the
--- nearest stop among tiles and boxes; returns the new position on that axis and records
--- the contacts that stop it there. probe.actor and probe.filter are set by the caller.
-local function axis_phase(world, is_x, x, y, delta)
+-- Moves `actor`'s box, at `pos` on the axis and `cross` across it, by `delta` along the
+-- axis, up to the nearest stop among tiles and boxes; returns the new position on that
+-- axis and records the contacts that stop it there. probe.actor and probe.filter are set
+-- by the caller (the hash scan's filter calls read them there).
+-- LuaJIT shaping: nine positional parameters, on purpose. Reading the actor, filter and
+-- sizes from the probe inside made make bench-jit's platformer compile more code (580
+-- traces, 758 KB against 512 and 643, median of 5 runs with a budget that never runs
+-- out, 2026-12-01) and flush more often at the default budget.
+local function axis_phase(world, actor, filter, is_x, pos, cross, size, cross_size, delta)
   local probe = world._probe
-  local actor, filter = probe.actor, probe.filter
-  local pos, size, cross, cross_size
-  if is_x then pos, size, cross, cross_size = x, actor.width, y, actor.height
-  else pos, size, cross, cross_size = y, actor.height, x, actor.width end
   local forward = delta > 0
   probe.is_x, probe.forward, probe.delta = is_x, forward, delta
   probe.pos, probe.size, probe.edge = pos, size, pos + size
@@ -85,7 +86,7 @@ local function axis_phase(world, is_x, x, y, delta)
   local side = is_x and SIDES_X[forward] or SIDES_Y[forward]
   local first_hit = world._n_hits
   local best
-  local layers, records = world._layers, world._records
+  local layers = world._layers
   for k = 1, #layers do
     local tiles = layers[k]
     if filter == nil or filter(actor, tiles) then
@@ -97,7 +98,7 @@ local function axis_phase(world, is_x, x, y, delta)
       end -- the same outcomes as sweep.stop_forward / stop_backward give
       if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
         if stop ~= best then best = stop; world._n_hits = first_hit end
-        local id = records[tiles].id
+        local id = world._records[tiles].id
         local cols, rows = probe.cols, probe.rows
         for c = 1, count do add_hit(world, tiles, side, cols[c], rows[c], id) end
       end
@@ -127,11 +128,11 @@ local function move_axis_sweep(world, actor, dx, dy, filter)
   local x, y = actor.x, actor.y
   if dx ~= 0 then
     world._round = 1
-    x = axis_phase(world, true, x, y, dx)
+    x = axis_phase(world, actor, filter, true, x, y, actor.width, actor.height, dx)
   end
   if dy ~= 0 then
     world._round = 2
-    y = axis_phase(world, false, x, y, dy)
+    y = axis_phase(world, actor, filter, false, y, x, actor.height, actor.width, dy)
   end
   probe.actor, probe.filter = nil, nil
   actor.x, actor.y = x, y
