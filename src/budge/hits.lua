@@ -16,14 +16,21 @@ local hits = {}
 ---@field package _round integer and the phase of the move it happened in
 
 ---Appends a contact with `other` (a solid box, or a tile layer with the tile's col and
----row) to the world's hits, in the world's current round.
+---row) to the world's hits, in the world's current round; `top` and `left` are the
+---corner of what was met (the box's, or the tile's), its sort keys.
+---LuaJIT shaping: the callers pass top and left, which they have at hand; computed here
+---from `other`, the branch made make bench-jit's platformer compile 606 traces and
+---790-813 KB instead of 535 and 621-627 (median of 6 runs with a budget that never runs
+---out, 2026-12-01).
 ---@param world budge.World
 ---@param other table
 ---@param side "floor"|"ceiling"|"left"|"right"
 ---@param col? integer
 ---@param row? integer
+---@param top number
+---@param left number
 ---@param id integer
-function hits.add(world, other, side, col, row, id)
+function hits.add(world, other, side, col, row, top, left, id)
   local n = world._n_hits + 1
   local hit = world._hits[n]
   if hit == nil then
@@ -31,12 +38,7 @@ function hits.add(world, other, side, col, row, id)
     world._hits[n] = hit
   end
   hit.other, hit.side, hit.col, hit.row = other, side, col, row
-  if col then
-    hit._top, hit._left = other.y + (row - 1) * other.tile_height,
-      other.x + (col - 1) * other.tile_width
-  else
-    hit._top, hit._left = other.y, other.x
-  end
+  hit._top, hit._left = top, left
   hit._id, hit._round = id, world._round
   world._n_hits = n
 end

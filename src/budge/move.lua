@@ -100,7 +100,11 @@ local function axis_phase(world, actor, filter, is_x, pos, cross, size, cross_si
         if stop ~= best then best = stop; world._n_hits = first_hit end
         local id = world._records[tiles].id
         local cols, rows = probe.cols, probe.rows
-        for c = 1, count do add_hit(world, tiles, side, cols[c], rows[c], id) end
+        for c = 1, count do
+          local col, row = cols[c], rows[c]
+          add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
+            tiles.x + (col - 1) * tiles.tile_width, id)
+        end
       end
     end
   end
@@ -113,7 +117,8 @@ local function axis_phase(world, actor, filter, is_x, pos, cross, size, cross_si
       local touch = probe.touch
       for t = 1, probe.touched do
         local record = touch[t]
-        add_hit(world, record.item, side, nil, nil, record.id)
+        local item = record.item
+        add_hit(world, item, side, nil, nil, item.y, item.x, record.id)
       end
     end
   end
@@ -186,12 +191,12 @@ local function advance(world, x, y, dx, dy, round)
           world._round = round
           if not outside then new_x = from_x
           elseif step_x > 0 then new_x = before(xs[i], width) else new_x = xs[i] + ws[i] end
-          add_hit(world, other[i], step_x > 0 and "right" or "left", cols[i], rows[i], ids[i])
+          add_hit(world, other[i], step_x > 0 and "right" or "left", cols[i], rows[i], ys[i], xs[i], ids[i])
         elseif kind == NORMAL_Y or corners_block then
           world._round = round + 1
           if not outside then new_y = from_y
           elseif step_y > 0 then new_y = before(ys[i], height) else new_y = ys[i] + hs[i] end
-          add_hit(world, other[i], step_y > 0 and "floor" or "ceiling", cols[i], rows[i], ids[i])
+          add_hit(world, other[i], step_y > 0 and "floor" or "ceiling", cols[i], rows[i], ys[i], xs[i], ids[i])
         end
       end
       return new_x, new_y, blocked_x, blocked_y, t_from + (t_to - t_from) * t
@@ -283,7 +288,7 @@ local function move_discrete(world, actor, dx, dy, filter, entry)
       local side
       if push_y < 0 then side = "floor" elseif push_y > 0 then side = "ceiling"
       elseif push_x < 0 then side = "right" elseif push_x > 0 then side = "left" end
-      if side then add_hit(world, other[i], side, cols[i], rows[i], ids[i]) end
+      if side then add_hit(world, other[i], side, cols[i], rows[i], ys[i], xs[i], ids[i]) end
     end
   end
 end
