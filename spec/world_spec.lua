@@ -278,7 +278,7 @@ describe("world:move", function()
     assert.has_error(function() world:move(box(0, 0, 1, 1), 1, 1) end,
       "actor must be an actor of this world (add it with world:add_actor), got a table")
     assert.has_error(function() world:move(solid, 1, 1) end,
-      "actor must be an actor of this world, got a solid (use world:update to move it)")
+      "actor must be an actor of this world, got a solid (world:move_solid moves solids)")
     actor.filter = "walls"
     assert.has_error(function() world:move(actor, 1, 1) end,
       'actor.filter must be a function or nil, got "walls"')

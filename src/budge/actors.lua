@@ -1,7 +1,9 @@
 -- budge.actors: the world's actors, in a list (the world's actor order: the order they
 -- were added, a removal moving the last one into the gap) and in a spatial hash that is
--- brought up to date lazily. A move only notes that its actor moved; the next query or
--- moving solid rehashes the noted actors, so a frame of moves pays nothing for the hash.
+-- brought up to date lazily. A move only notes that its actor moved; the next query
+-- rehashes the noted actors, so a frame of moves pays nothing for the hash. Each record
+-- keeps a copy of its actor's box as the world last checked it (at add, update and each
+-- move): queries read the copy, so a field the game overwrote since is never read.
 
 local actors = {}
 
@@ -13,8 +15,15 @@ function actors.insert(world, record)
   local index = #list + 1
   list[index] = record
   record.index = index
+  actors.copy(record)
+  world._actors:insert(record, record.x, record.y, record.width, record.height)
+end
+
+---Copies the actor's box into its record (after the box was checked).
+---@param record budge.Record
+function actors.copy(record)
   local item = record.item
-  world._actors:insert(record, item.x, item.y, item.width, item.height)
+  record.x, record.y, record.width, record.height = item.x, item.y, item.width, item.height
 end
 
 ---Takes an actor's record out of the list and the hash.
@@ -46,8 +55,8 @@ end
 ---@param world budge.World
 ---@param record budge.Record
 function actors.rehash_one(world, record)
-  local item = record.item
-  world._actors:moved(record, item.x, item.y, item.width, item.height)
+  actors.copy(record)
+  world._actors:moved(record, record.x, record.y, record.width, record.height)
 end
 
 ---Brings the cells of the actors moved since the last call up to date.
@@ -59,8 +68,7 @@ function actors.rehash(world)
     dirty[i] = nil
     record.dirty = false
     if record.index then -- still in the world
-      local item = record.item
-      hash:moved(record, item.x, item.y, item.width, item.height)
+      hash:moved(record, record.x, record.y, record.width, record.height)
     end
   end
   world._n_dirty = 0

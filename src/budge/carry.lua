@@ -7,6 +7,12 @@
 -- carried by the same distance. Pushed and carried actors move like any actor (the
 -- moving solid aside), so they stop against other solids; a pushed actor that cannot get
 -- out of the way is crushed. Actors are handled in the world's actor order.
+--
+-- A solid pushes only with its leading face: an actor that reaches out past that face,
+-- within the distance moved, is pushed; one behind the face (wholly inside the solid, or
+-- across its trailing face, as a crushed actor is when its crusher retracts) is never
+-- carried across the solid. Whatever overlaps a (not oneway) solid after its move is
+-- reported crushed, whichever way it moved: no actor is left inside it unreported.
 
 local here = (...):match("^(.*)%.[^%.]+$")
 local sweep = require(here .. ".sweep")
@@ -71,37 +77,40 @@ local function solid_phase(world, solid, oneway, is_x, delta, ride_stamp)
   end
   for k = 1, count do
     local record = near[k]
-    local actor = record.item
-    local ax, ay, aw, ah = actor.x, actor.y, actor.width, actor.height
-    local target
-    if is_x then
-      -- the band swept along x, for actors overlapping it strictly on y
-      if not oneway and ay < y + height and y < ay + ah then
-        if delta > 0 and ax + aw > x and ax < x + width + delta then
-          target = x + width + delta
-        elseif delta < 0 and ax < x + width and ax + aw > x + delta then
-          target = before(x + delta, aw)
+    if not record.removed then -- (one a filter removed, earlier in this move, is skipped)
+      local actor = record.item
+      local ax, ay, aw, ah = actor.x, actor.y, actor.width, actor.height
+      local target
+      if is_x then
+        -- the band swept along x ahead of the leading face, for actors overlapping it
+        -- strictly on y that reach out past that face
+        if not oneway and ay < y + height and y < ay + ah then
+          if delta > 0 and ax + aw > x + width and ax < x + width + delta then
+            target = x + width + delta
+          elseif delta < 0 and ax < x and ax + aw > x + delta then
+            target = before(x + delta, aw)
+          end
         end
-      end
-      if target then
-        if not shove(world, record, true, target) then crush(world, record) end
-      elseif record.ride_stamp == ride_stamp then
-        shove(world, record, true, ax + delta)
-      end
-    else
-      if ax < x + width and x < ax + aw then
-        if delta < 0 and ay < y + height and ay + ah > y + delta
-          and (not oneway or ay + ah <= y) then
-          target = before(y + delta, ah)
-        elseif delta > 0 and not oneway and ay + ah > y + height and ay < y + height + delta then
-          target = y + height + delta
+        if target then
+          if not shove(world, record, true, target) then crush(world, record) end
+        elseif record.ride_stamp == ride_stamp then
+          shove(world, record, true, ax + delta)
         end
-      end
-      if target then
-        if not shove(world, record, false, target) then crush(world, record) end
-      elseif record.ride_stamp == ride_stamp then
-        -- carried down (or along, if pushed no further): rest exactly on the new top
-        shove(world, record, false, before(y + delta, ah))
+      else
+        if ax < x + width and x < ax + aw then
+          if delta < 0 and ay < y and ay + ah > y + delta
+            and (not oneway or ay + ah <= y) then
+            target = before(y + delta, ah)
+          elseif delta > 0 and not oneway and ay + ah > y + height and ay < y + height + delta then
+            target = y + height + delta
+          end
+        end
+        if target then
+          if not shove(world, record, false, target) then crush(world, record) end
+        elseif record.ride_stamp == ride_stamp then
+          -- carried down (or along, if pushed no further): rest exactly on the new top
+          shove(world, record, false, before(y + delta, ah))
+        end
       end
     end
   end
@@ -117,18 +126,15 @@ local jit = rawget(_G, "jit")
 if jit and jit.off then jit.off(solid_phase) end
 
 ---Moves a solid of the world by (dx, dy) (checked by the caller): pushes, carries and
----crushes actors as the module comment says. Returns the crushed actors' count and the
----world's array of them, after calling each one's on_crush.
+---crushes actors as the module comment says, the crushed ones into world._crushed.
 ---@param world budge.World
 ---@param record budge.Record the solid's record
 ---@param dx number
 ---@param dy number
----@return integer n, budge.Box[] crushed
 function carry.move_solid(world, record, dx, dy)
   local solid = record.item
   local stamp = world._crush_stamp + 1
   world._crush_stamp = stamp
-  world._n_crushed = 0
   -- riders are decided once, where the solid stands before it moves
   local top, left, right = solid.y, solid.x, solid.x + solid.width
   local near = world._near
@@ -138,19 +144,45 @@ function carry.move_solid(world, record, dx, dy)
       near[k].ride_stamp = stamp
     end
   end
-  solids.remove(world, record) -- out of every actor's way while it moves
+  solids.unhash(world, record) -- out of every actor's way while it moves
   local oneway = record.oneway
   if dx ~= 0 then solid_phase(world, solid, oneway, true, dx, stamp) end
   if dy ~= 0 then solid_phase(world, solid, oneway, false, dy, stamp) end
-  solids.insert(world, record)
+  if not record.removed then solids.hash(world, record) end
   world._n_hits = 0
-  local crushed, n = world._crushed, world._n_crushed
-  for i = n + 1, #crushed do crushed[i] = nil end
-  for i = 1, n do
-    local on_crush = crushed[i].on_crush
-    if type(on_crush) == "function" then on_crush(crushed[i], solid) end
+  -- whatever is left inside the solid (it was inside already, or behind a face the
+  -- solid never pushes with) is reported crushed: no actor ends inside it unreported
+  if not oneway then
+    local x, y, width, height = solid.x, solid.y, solid.width, solid.height
+    for k = 1, near_actors(world, x, y, width, height) do
+      local near_record = near[k]
+      local actor = near_record.item
+      if not near_record.removed and actor.x < x + width and x < actor.x + actor.width
+        and actor.y < y + height and y < actor.y + actor.height then
+        crush(world, near_record)
+      end
+    end
   end
-  return n, crushed
+end
+
+---What an error raised by a filter during carry.move_solid leaves: the solid where it
+---was going (its record agrees), the actors it had pushed or carried where they got to,
+---no actor reported crushed. An actor it had not reached yet may now overlap it, as if
+---teleported there: such an actor can move out, never deeper.
+---@param world budge.World
+---@param record budge.Record
+---@param dx number
+---@param dy number
+function carry.abandon(world, record, dx, dy)
+  local solid = record.item
+  solid.x, solid.y = record.x + dx, record.y + dy -- the record still holds the start
+  if not record.removed then
+    solids.unhash(world, record)
+    solids.hash(world, record)
+  end
+  local probe = world._probe
+  probe.actor, probe.filter = nil, nil
+  world._n_crushed, world._n_hits = 0, 0
 end
 
 return carry

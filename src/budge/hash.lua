@@ -9,6 +9,12 @@
 -- The hash stores what it is given: it reads and writes only the fields declared in
 -- budge.HashRecord. Cells are never freed: a world whose boxes stay in one area stops
 -- allocating once every cell it uses exists. Nothing here iterates with pairs().
+--
+-- Bounded work: a record spanning more than BIG_CELLS cells is kept in a list of big
+-- records instead of its cells, and a scan of a rectangle touching more cells than the
+-- hash holds records walks the list of all records instead of the cells, so no call
+-- walks more cells than it has records to find. Keys are exact while |cx| and |cy| stay
+-- below 2^25, which the world's range (2^24 cells either way) keeps.
 
 local here = (...):match("^(.*)%.[^%.]+$")
 local sweep = require(here .. ".sweep")
@@ -27,16 +33,21 @@ local hash = {}
 ---@field width? number
 ---@field height? number
 ---@field oneway? boolean blocks only moves down onto its top (read by Hash:axis_stop)
+---@field removed? boolean taken out of its world while a move runs: scans skip it
 ---@field package _cx0 integer the cells the record is in (written by the hash)
 ---@field package _cy0 integer
 ---@field package _cx1 integer
 ---@field package _cy1 integer
 ---@field package _stamp integer the last scan that visited it (written by the hash)
+---@field package _slot integer its place in the hash's list of all records
+---@field package _big_slot? integer its place in the list of big records, when it is one
 
 ---@class budge.Hash
 ---@field cell_size number side of a cell
 ---@field package _cells table<number, budge.HashRecord[]> cell key -> records, in insertion order
 ---@field package _stamp integer the counter scans take their stamps from
+---@field package _all budge.HashRecord[] every record, in no particular order
+---@field package _big budge.HashRecord[] the records spanning more than BIG_CELLS cells
 local Hash = {}
 Hash.__index = Hash
 
@@ -48,12 +59,14 @@ Hash.__index = Hash
 -- bench/world.lua --profile boxes` and `--profile merged`, median of 5, 2026-12-01).
 local KEY_STRIDE = 2 ^ 26
 local KEY_OFFSET = 2 ^ 25 * (KEY_STRIDE + 1)
+local BIG_CELLS = 64
 
 ---A new, empty hash.
 ---@param cell_size number > 0, checked by the caller
 ---@return budge.Hash
 function hash.new(cell_size)
-  return setmetatable({cell_size = cell_size, _cells = {}, _stamp = 0}, Hash)
+  return setmetatable({cell_size = cell_size, _cells = {}, _stamp = 0, _all = {}, _big = {}},
+    Hash)
 end
 
 ---A fresh stamp for one scan: records visited in that scan carry it.
@@ -95,6 +108,15 @@ end
 function Hash:insert(record, x, y, width, height)
   local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
   record._cx0, record._cy0, record._cx1, record._cy1 = cx0, cy0, cx1, cy1
+  local all = self._all
+  local slot = #all + 1
+  all[slot], record._slot = record, slot
+  if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > BIG_CELLS then
+    local big = self._big
+    local big_slot = #big + 1
+    big[big_slot], record._big_slot = record, big_slot
+    return
+  end
   local cells = self._cells
   for cy = cy0, cy1 do
     for cx = cx0, cx1 do
@@ -111,7 +133,17 @@ end
 
 ---Removes `record` from the cells it was inserted in.
 ---@param record budge.HashRecord
+local function unlist(list, record, field)
+  local slot, count = record[field], #list
+  local last = list[count]
+  list[slot], last[field] = last, slot
+  list[count] = nil
+  record[field] = nil
+end
+
 function Hash:remove(record)
+  unlist(self._all, record, "_slot")
+  if record._big_slot then unlist(self._big, record, "_big_slot") return end
   local cells = self._cells
   for cy = record._cy0, record._cy1 do
     for cx = record._cx0, record._cx1 do
@@ -157,6 +189,18 @@ end
 function Hash:collect(x, y, width, height, out, n)
   local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
   local stamp = self:next_stamp()
+  local all = self._all
+  if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > #all then -- fewer records than cells: walk them
+    for i = 1, #all do
+      local record = all[i]
+      if record._cx0 <= cx1 and cx0 <= record._cx1 and record._cy0 <= cy1
+        and cy0 <= record._cy1 then
+        n = n + 1
+        out[n] = record
+      end
+    end
+    return n
+  end
   local cells = self._cells
   for cy = cy0, cy1 do
     for cx = cx0, cx1 do
@@ -171,6 +215,15 @@ function Hash:collect(x, y, width, height, out, n)
           end
         end
       end
+    end
+  end
+  local big = self._big
+  for i = 1, #big do
+    local record = big[i]
+    if record._cx0 <= cx1 and cx0 <= record._cx1 and record._cy0 <= cy1
+      and cy0 <= record._cy1 then
+      n = n + 1
+      out[n] = record
     end
   end
   return n
@@ -191,7 +244,7 @@ local function consider(probe, record, low, length)
     stop = stop_backward(low + length, probe.pos, probe.edge, probe.reach, record.oneway,
       probe.blocks_oneway)
   end
-  if stop == nil then return end
+  if stop == nil or record.removed then return end
   local best = probe.best
   if best ~= nil and (probe.forward and stop > best or not probe.forward and stop < best) then
     return
@@ -238,17 +291,24 @@ function Hash:axis_stop(x, y, width, height, probe)
   local stamp = self._stamp + 1
   self._stamp = stamp
   local cells = self._cells
+  local columns = cx1 - cx0 + 1
+  local count = columns * (cy1 - cy0 + 1)
+  if count > #self._all then -- fewer records than cells: scan them all (bounded work)
+    scan_cell(self._all, stamp, probe)
+    return
+  end
   -- LuaJIT shaping: one flat loop over the cells, not two nested ones (one loop trace
   -- instead of one per level): 797 ns per move instead of 839 on merged boxes, 1015 and
   -- 1019 on boxes, within noise (`luajit bench/world.lua --profile merged`, median of 5,
-  -- 2026-12-01); kept for the traces it saves (make bench-jit).
-  local columns = cx1 - cx0 + 1
-  local base = cx0 + cy0 * KEY_STRIDE + KEY_OFFSET
-  for k = 0, columns * (cy1 - cy0 + 1) - 1 do
+  -- 2026-12-01); kept for the traces it saves (make bench-jit). The key is the one
+  -- expression insert uses, for the cell (cx0 + column, cy0 + row).
+  for k = 0, count - 1 do
     local row = floor(k / columns)
-    local cell = cells[base + (k - row * columns) + row * KEY_STRIDE]
+    local cell = cells[(cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
     if cell then scan_cell(cell, stamp, probe) end
   end
+  local big = self._big
+  if #big > 0 then scan_cell(big, stamp, probe) end
 end
 
 return hash

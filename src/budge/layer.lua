@@ -80,10 +80,14 @@ end
 ---@param to number
 ---@return integer first, integer last
 local function span(origin, size, inverse, count, from, to)
+  -- the divisions may round either way across a tile edge (an origin like 0.3 is not
+  -- exact in binary): each result is checked against the edges themselves
   local first = floor((from - origin) * inverse)
-  if origin + first * size > from then first = first - 1 end
+  if origin + first * size > from then first = first - 1
+  elseif origin + (first + 1) * size <= from then first = first + 1 end
   local last = ceil((to - origin) * inverse) - 1
-  if origin + (last + 1) * size < to then last = last + 1 end
+  if origin + (last + 1) * size < to then last = last + 1
+  elseif origin + last * size >= to then last = last - 1 end
   if first < 0 then first = 0 end
   if last > count - 1 then last = count - 1 end
   return first, last
@@ -214,7 +218,7 @@ local function scan_forward(kinds, stride, cross_stride, first, last, origin, ti
   for j = from, to do
     local near = origin + j * tile
     if near >= far then return nil end
-    if near > pos then
+    if near > pos or near >= edge then -- (or: a box of size 0 touching the face)
       local ok = blocks_oneway and near >= edge
       if line_blocks(kinds, j * stride + 1, cross_stride, first, last, ok) then
         return j, near, ok
@@ -229,7 +233,7 @@ local function scan_backward(kinds, stride, cross_stride, first, last, origin, t
   for j = from, 0, -1 do
     local high = origin + (j + 1) * tile
     if high <= far then return nil end
-    if high < edge then
+    if high < edge or high <= pos then -- (or: a box of size 0 touching the face)
       local ok = blocks_oneway and high <= pos
       if line_blocks(kinds, j * stride + 1, cross_stride, first, last, ok) then
         return j, high, ok

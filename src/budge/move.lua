@@ -89,7 +89,8 @@ local function axis_phase(world, actor, filter, is_x, pos, cross, size, cross_si
   local layers = world._layers
   for k = 1, #layers do
     local tiles = layers[k]
-    if filter == nil or filter(actor, tiles) then
+    -- a layer removed by a filter earlier in this move (or by this call) is skipped
+    if world._records[tiles] and (filter == nil or filter(actor, tiles)) and world._records[tiles] then
       local face, count = tile_face(tiles, probe)
       local stop = face
       if face then
@@ -209,6 +210,7 @@ local function move_swept(world, actor, dx, dy, filter)
   local probe = world._probe
   probe.actor, probe.filter = actor, filter
   local x, y = actor.x, actor.y
+  local target_x, target_y = x + dx, y + dy
   for slide = 1, MAX_SLIDES do
     if dx == 0 and dy == 0 then break end
     local blocked_x, blocked_y, travelled
@@ -219,6 +221,10 @@ local function move_swept(world, actor, dx, dy, filter)
     dx = blocked_x and 0 or dx * rest
     dy = blocked_y and 0 or dy * rest
   end
+  -- the slides' pieces, each rounded, can add up to an ulp more than the move: never
+  -- further than asked
+  if (target_x - actor.x) * (x - target_x) > 0 then x = target_x end
+  if (target_y - actor.y) * (y - target_y) > 0 then y = target_y end
   probe.actor, probe.filter = nil, nil
   actor.x, actor.y = x, y
 end
@@ -244,11 +250,12 @@ end
 local function move_discrete(world, actor, dx, dy, filter, entry)
   local prev_y = actor.y
   local x, y, width, height = actor.x + dx, actor.y + dy, actor.width, actor.height
-  actor.x, actor.y = x, y
   local probe = world._probe
   probe.actor, probe.filter = actor, filter
+  -- the filter runs here, before the actor moves: if it raises an error, nothing moved
   local set = gather(world, x, y, width, height)
   probe.actor, probe.filter = nil, nil
+  actor.x, actor.y = x, y
   local n = set.n
   if n == 0 then return end
   local order = world._order

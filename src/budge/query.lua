@@ -68,9 +68,10 @@ function query.area(world, x, y, width, height, out)
   for i = 1, count do
     local record = found[i]
     found[i] = nil
-    local item = record.item
-    if item.x < x + width and x < item.x + item.width and item.y < y + height
-      and y < item.y + item.height then
+    -- the record's copy of the box: where the world last saw it (checked then)
+    local bx, by = record.x, record.y
+    if bx < x + width and x < bx + record.width and by < y + height
+      and y < by + record.height then
       n = n + 1
       found[n] = record
     end
@@ -109,8 +110,7 @@ function query.segment(world, x1, y1, x2, y2, out, out_t)
   for i = 1, count do
     local record = found[i]
     found[i] = nil
-    local item = record.item
-    local t = segment_enter(x1, y1, dx, dy, item.x, item.y, item.width, item.height)
+    local t = segment_enter(x1, y1, dx, dy, record.x, record.y, record.width, record.height)
     if t then
       n = n + 1
       found[n] = record

@@ -37,26 +37,29 @@ local function grow(bounds, x, y, x1, y1)
 end
 
 ---Puts a solid's record into the hash with a fresh copy of its box and grows the bounds.
+---(The world counts its solids; this only hashes them.)
 ---@param world budge.World
 ---@param record budge.Record
-function solids.insert(world, record)
+function solids.hash(world, record)
   local item = record.item
   local x, y, width, height = item.x, item.y, item.width, item.height
   record.oneway = item.wall_type == "oneway"
   record.x, record.y, record.width, record.height = x, y, width, height
   world._solids:insert(record, x, y, width, height)
-  world._solid_count = world._solid_count + 1
+  record._in_hash = true
   local x1, y1 = x + width, y + height
   grow(world._bounds, x, y, x1, y1)
   grow(world._box_bounds, x, y, x1, y1)
 end
 
----Takes a solid's record out of the hash.
+---Takes a solid's record out of the hash, if it is there.
 ---@param world budge.World
 ---@param record budge.Record
-function solids.remove(world, record)
-  world._solids:remove(record)
-  world._solid_count = world._solid_count - 1
+function solids.unhash(world, record)
+  if record._in_hash then
+    world._solids:remove(record)
+    record._in_hash = false
+  end
 end
 
 ---Appends a tile layer to the world's list and grows the bounds.
@@ -65,6 +68,13 @@ end
 function solids.add_layer(world, tiles)
   local layers = world._layers
   layers[#layers + 1] = tiles
+  solids.grow_layer(world, tiles)
+end
+
+---Grows the bounds of everything solid to hold the layer where it is now.
+---@param world budge.World
+---@param tiles budge.TileLayer
+function solids.grow_layer(world, tiles)
   grow(world._bounds, tiles.x, tiles.y, tiles.x + tiles.cols * tiles.tile_width,
     tiles.y + tiles.rows * tiles.tile_height)
 end
@@ -141,9 +151,9 @@ function solids.gather(world, x, y, width, height)
       local record = found[i]
       found[i] = nil
       local solid = record.item
-      if filter == nil or filter(actor, solid) then
+      if not record.removed and (filter == nil or filter(actor, solid)) then
         n = n + 1
-        xs[n], ys[n], ws[n], hs[n] = solid.x, solid.y, solid.width, solid.height
+        xs[n], ys[n], ws[n], hs[n] = record.x, record.y, record.width, record.height
         oneway[n], other[n], cols[n], rows[n], ids[n] = record.oneway, solid, nil, nil, record.id
       end
     end
@@ -152,8 +162,9 @@ function solids.gather(world, x, y, width, height)
   local layers, records = world._layers, world._records
   for k = 1, #layers do
     local tiles = layers[k]
-    if filter == nil or filter(actor, tiles) then
-      gather_layer(tiles, x, y, width, height, set, records[tiles].id)
+    if records[tiles] and (filter == nil or filter(actor, tiles)) then
+      local record = records[tiles] -- (again: the filter may have removed it)
+      if record then gather_layer(tiles, x, y, width, height, set, record.id) end
     end
   end
   return set

@@ -165,13 +165,15 @@ end
 ---@param blocks_oneway boolean
 ---@return number?
 function sweep.stop_forward(near, pos, edge, reach, size, oneway, blocks_oneway)
-  if near <= pos or near >= reach then return nil end
+  if near >= reach then return nil end
+  -- ahead of the leading edge first: for a box of size 0 (pos == edge) a face touching it
+  -- is ahead, not behind
   if near >= edge then
     if blocks_oneway or not oneway then return sweep.before(near, size) end
     return nil
   end
-  if not oneway then return pos end
-  return nil
+  if near <= pos or oneway then return nil end
+  return pos
 end
 
 ---Moving toward -x or -y against a candidate whose high face is at `far`: the position
@@ -184,13 +186,13 @@ end
 ---@param blocks_oneway boolean
 ---@return number?
 function sweep.stop_backward(far, pos, edge, reach, oneway, blocks_oneway)
-  if far >= edge or far <= reach then return nil end
-  if far <= pos then
+  if far <= reach then return nil end
+  if far <= pos then -- (before the edge test, for a box of size 0)
     if blocks_oneway or not oneway then return far end
     return nil
   end
-  if not oneway then return pos end
-  return nil
+  if far >= edge or oneway then return nil end
+  return pos
 end
 
 -- Entry and exit times of [pos, pos + size] moving `delta` against [other, other + size2]

@@ -59,36 +59,68 @@ function tilegrid.check_options(tile_width, tile_height, opts, level)
   return opts
 end
 
--- Checks that `rows` (a table whose first entry is a table) is a 2D grid whose rows
--- all have the same length. Returns the number of columns.
-local function check_rows(rows, level)
-  local cols
-  for row = 1, #rows do
+-- The most tiles one grid may have: 2^24, a 4096x4096 map (its kinds take ~130 MB).
+local MAX_TILES = 2 ^ 24
+tilegrid.MAX_TILES = MAX_TILES
+
+-- The largest whole-number key >= 1 of `t`, 0 when none: the length of an array that
+-- may have holes, the same on every interpreter (`#` is not, once there are holes). Only
+-- the maximum is kept, so the order pairs() visits keys in cannot reach a result.
+local function extent(t)
+  local n = 0
+  for key in pairs(t) do
+    if type(key) == "number" and key > n and key % 1 == 0 then n = key end
+  end
+  return n
+end
+
+local function check_size(cols, rows, level)
+  if cols * rows > MAX_TILES then
+    error(format("grid is %dx%d tiles, more than the %d one layer holds: split it into "
+      .. "layers", cols, rows, MAX_TILES), level + 1)
+  end
+end
+
+-- Checks a 2D grid: rows 1..extent are tables, all of one length (their last tile's
+-- index), or none longer than `width` when it is given. Returns cols, rows.
+local function check_rows(rows, width, level)
+  local count, cols = extent(rows), width
+  for row = 1, count do
     local line = rows[row]
     if type(line) ~= "table" then
       error(format("grid[%d] must be a table (a row of tiles), got %s", row, describe(line)),
         level + 1)
     end
-    if cols == nil then
-      cols = #line
-    elseif #line ~= cols then
+    local length = extent(line)
+    if width ~= nil then
+      if length > width then
+        error(format("grid[%d] has a tile in column %d, beyond opts.width (%d)", row, length,
+          width), level + 1)
+      end
+    elseif cols == nil then
+      cols = length
+    elseif length ~= cols then
       error(format("grid[%d] has %d tiles but grid[1] has %d: every row must have the same "
-        .. "length", row, #line, cols), level + 1)
+        .. "length", row, length, cols), level + 1)
     end
   end
-  return cols or 0
+  cols = cols or 0
+  check_size(cols, count, level + 1)
+  return cols, count
 end
 
 local function check_width(cols, message, level)
-  if type(cols) ~= "number" or cols < 1 or cols % 1 ~= 0 then
+  if type(cols) ~= "number" or cols < 1 or cols % 1 ~= 0 or cols > MAX_TILES then
     error(format(message, describe(cols)), level + 1)
   end
 end
 
 ---Measures the caller's grid without reading its ids: which form it is in and its size.
----Errors (naming the argument "grid") at `level` for anything that is not a grid.
----@param source any grid[row][col], a flat array, or a Tiled layer {width =, data =}
----@param width any opts.width, for a flat array
+---A nil id is an empty tile wherever it stands: sizes come from the largest index
+---present (or a Tiled layer's width and height, or opts.width), never from `#`. Errors
+---(naming the argument "grid") at `level` for anything that is not a grid.
+---@param source any grid[row][col], a flat array, or a Tiled layer {width =, height =, data =}
+---@param width any opts.width: tiles per row of a flat array, or the longest row of a 2D grid
 ---@param level integer
 ---@return table|nil data the flat array of ids, or nil for a 2D grid
 ---@return integer cols
@@ -98,25 +130,50 @@ function tilegrid.measure(source, width, level)
     error(format("grid must be a table (grid[row][col], a flat array with opts.width, or a "
       .. "Tiled layer {width =, data =}), got %s", describe(source)), level + 1)
   end
+  if width ~= nil then
+    check_width(width, "opts.width must be a whole number >= 1 (tiles per row), got %s",
+      level + 1)
+  end
   local data, cols = source, width
-  if type(source.data) == "table" then -- a Tiled layer
+  local tiled = type(source.data) == "table"
+  if tiled then
     data, cols = source.data, source.width
     check_width(cols, "grid.width must be a whole number >= 1 (tiles per row of the Tiled "
       .. "layer), got %s", level + 1)
-  elseif type(source[1]) == "table" then
-    return nil, check_rows(source, level + 1), #source
-  elseif #source > 0 then
+  end
+  local count = extent(data)
+  if count == 0 then return data, cols or 0, 0 end
+  local first = data[1]
+  for i = 2, count do
+    if first ~= nil then break end
+    first = data[i]
+  end
+  if not tiled and type(first) == "table" then
+    local row_cols, rows = check_rows(source, width, level + 1)
+    return nil, row_cols, rows
+  end
+  if cols == nil then
     check_width(cols, "opts.width must be a whole number >= 1 for a flat grid (tiles per "
       .. "row), got %s", level + 1)
-  else
-    return nil, 0, 0
   end
-  local count = #data
-  if count % cols ~= 0 then
+  local rows
+  local height = tiled and source.height or nil
+  if height ~= nil then
+    check_width(height, "grid.height must be a whole number >= 1 (rows of the Tiled layer), "
+      .. "got %s", level + 1)
+    if count ~= cols * height then
+      error(format("grid.data has %d tiles but grid.width x grid.height is %dx%d = %d", count,
+        cols, height, cols * height), level + 1)
+    end
+    rows = height
+  elseif count % cols ~= 0 then
     error(format("grid has %d tiles, which is not a whole number of rows of %d", count, cols),
       level + 1)
+  else
+    rows = count / cols
   end
-  return data, cols, count / cols
+  check_size(cols, rows, level + 1)
+  return data, cols, rows
 end
 
 ---Reads the ids of a measured grid into `kinds` (EMPTY, SOLID or ONEWAY at

@@ -30,6 +30,12 @@ local format, error, type = string.format, error, type
 
 local SOLID, ACTOR, TILES = "solid", "actor", "tiles"
 
+-- The range within which every operation is exact, terminates and does bounded work:
+-- coordinates (x, y, x + width, y + height) within 2^24 cells of the origin either way,
+-- and within 2^40 px. The hash's cell keys are exact below 2^25 cells; 2^40 px keeps
+-- sums of coordinates exact to 2^-12 px and far from integer overflow on Lua 5.3 / 5.4.
+local RANGE_CELLS, RANGE_MAX = 2 ^ 24, 2 ^ 40
+
 local world = {}
 
 ---What the world keeps for each item: one per solid, actor and tile layer.
@@ -43,10 +49,13 @@ local world = {}
 ---@field ride_stamp? integer the move_solid that found this actor riding
 ---@field crush_stamp? integer the move_solid that crushed it
 ---@field package _t? number scratch of query_segment: where the segment enters it
+---@field removed? boolean taken out of the world (while a callback ran: not met again)
+---@field package _in_hash? boolean a solid's record is in the solid hash
 
 ---A world of solids, actors and tile layers. Made by budge.new_world.
 ---@class budge.World
 ---@field cell_size number side of a spatial hash cell
+---@field range number coordinates stay within [-range, range]: 2^24 cells, at most 2^40 px
 ---@field package _records table<table, budge.Record> item -> record
 ---@field package _next_id integer the id of the last item added
 ---@field package _solids budge.Hash the solid boxes
@@ -73,6 +82,11 @@ local world = {}
 ---@field package _crushed budge.Box[] the last move_solid's crushed actors
 ---@field package _n_crushed integer
 ---@field package _crush_stamp integer counts move_solid calls
+---@field package _crush_lists budge.Box[][] one crushed list per nesting depth of move_solid
+---@field package _crush_depth integer how many move_solid calls are running their on_crush
+---@field package _busy string|false the callback running now ("an actor's filter"), or false
+---@field package _pending budge.Record[] items removed while a callback ran, to take out after
+---@field package _n_pending integer
 local World = {}
 World.__index = World
 
@@ -97,8 +111,10 @@ function world.new_world(opts)
     error(format("opts.cell_size must be a finite number > 0, got %s", describe(cell_size)), 2)
   end
   local set = sweep.new_set()
+  local range = cell_size * RANGE_CELLS
+  if range > RANGE_MAX then range = RANGE_MAX end
   return setmetatable({
-    cell_size = cell_size,
+    cell_size = cell_size, range = range,
     _records = {}, _next_id = 0,
     _solids = hash.new(cell_size), _solid_count = 0, _layers = {},
     _bounds = solids.new_bounds(), _box_bounds = solids.new_bounds(),
@@ -111,6 +127,8 @@ function world.new_world(opts)
     _wide = {x = 0, y = 0, width = 0, height = 0, wall_type = "vertical"},
     _found = {},
     _near = {}, _crushed = {}, _n_crushed = 0, _crush_stamp = 0,
+    _crush_lists = {}, _crush_depth = 0,
+    _busy = false, _pending = {}, _n_pending = 0,
   }, World)
 end
 
@@ -139,6 +157,57 @@ local function find_record(self, item, level)
   return record
 end
 
+-- Every public method but move starts here: a world called with "." instead of ":", or
+-- from inside one of its own callbacks (other than to remove items), is refused.
+local function enter(self, call)
+  if getmetatable(self) ~= World then
+    error(format("call it as world:%s(...), with a colon, got %s for the world", call,
+      describe(self)), 3)
+  end
+  if self._busy then
+    error(format("world:%s was called from inside %s: a callback may remove items from its "
+      .. "own world (world:remove) or use another world, but make no other call into its own",
+      call, self._busy), 3)
+  end
+end
+
+-- Takes out what was removed while a callback ran (world:remove only marked it).
+local function flush(self)
+  local pending = self._pending
+  for i = 1, self._n_pending do
+    local record = pending[i]
+    pending[i] = nil
+    local kind = record.kind
+    if kind == SOLID then solids.unhash(self, record)
+    elseif kind == ACTOR then actors.remove(self, record)
+    else solids.remove_layer(self, record.item) end
+  end
+  self._n_pending = 0
+end
+
+-- Runs `body(self, ...)` as the callback `busy` may interrupt: world:remove only marks
+-- items while it runs, and an error it raises leaves the world as `recover(self, ...)`
+-- puts it and then propagates unchanged.
+local function guarded(self, busy, body, recover, a, b, c, d, e)
+  self._busy = busy
+  local ok, err = pcall(body, self, a, b, c, d, e)
+  self._busy = false
+  if not ok then recover(self, a, b, c, d, e) end
+  flush(self)
+  if not ok then error(err, 0) end
+end
+
+-- Errors (at the caller of the entry that calls it) when the span [low, low + size] on
+-- one axis leaves the world's range.
+local function check_span(self, low, size, name, what)
+  local range = self.range
+  if low < -range or low + size > range then
+    error(format("%s must keep %s within this world's range, -%s to %s (2^24 cells of %s "
+      .. "px, at most 2^40 px), got %s", name, what, describe(range), describe(range),
+      describe(self.cell_size), describe(low)), 3)
+  end
+end
+
 local function check_out(out, name)
   if out ~= nil and type(out) ~= "table" then
     error(format("%s must be a table or nil, got %s", name, describe(out)), 3)
@@ -146,15 +215,27 @@ local function check_out(out, name)
   return out or {}
 end
 
+-- What an error raised by a filter during world:move leaves: the actor where it was,
+-- the hits of that move gone.
+local function abandon_move(self)
+  local probe = self._probe
+  probe.actor, probe.filter = nil, nil
+  self._n_hits = 0
+end
+
 ---Adds a solid box: actors stop against it. `wall_type = "oneway"` makes it block
 ---only actors coming down onto it from above.
 ---@param solid budge.Box
 ---@return budge.Box solid
 function World:add_solid(solid)
+  enter(self, "add_solid")
+  refuse_duplicate(self, solid, "box")
   check_box(solid, "box", 2)
   check_wall_type(solid, "box", 2)
-  refuse_duplicate(self, solid, "box")
-  solids.insert(self, new_record(self, solid, SOLID))
+  check_span(self, solid.x, solid.width, "box.x", "the box")
+  check_span(self, solid.y, solid.height, "box.y", "the box")
+  solids.hash(self, new_record(self, solid, SOLID))
+  self._solid_count = self._solid_count + 1
   return solid
 end
 
@@ -163,8 +244,11 @@ end
 ---@param actor budge.Box
 ---@return budge.Box actor
 function World:add_actor(actor)
-  check_box(actor, "box", 2)
+  enter(self, "add_actor")
   refuse_duplicate(self, actor, "box")
+  check_box(actor, "box", 2)
+  check_span(self, actor.x, actor.width, "box.x", "the box")
+  check_span(self, actor.y, actor.height, "box.y", "the box")
   actors.insert(self, new_record(self, actor, ACTOR))
   return actor
 end
@@ -181,47 +265,73 @@ end
 ---@param opts? budge.LayerOptions
 ---@return budge.TileLayer handle world:remove and world:update take it, hits name it as `other`
 function World:add_tiles(grid, tile_width, tile_height, opts)
+  enter(self, "add_tiles")
   if type(grid) ~= "table" then
     error(format("grid must be a table of rows (grid[row][col]), got %s", describe(grid)), 2)
   end
   opts = tilegrid.check_options(tile_width, tile_height, opts, 2)
   local tiles = layer.new(grid, tile_width, tile_height, opts, 2)
+  check_span(self, tiles.x, tiles.cols * tile_width, "opts.x", "the layer")
+  check_span(self, tiles.y, tiles.rows * tile_height, "opts.y", "the layer")
   new_record(self, tiles, TILES)
   solids.add_layer(self, tiles)
   return tiles
 end
 
----Removes a solid, an actor or a tile layer (by its handle).
+---Removes a solid, an actor or a tile layer (by its handle). Allowed from inside the
+---world's own callbacks: an item removed there is not met again by the move running.
 ---@param item table
 function World:remove(item)
+  if getmetatable(self) ~= World then
+    error(format("call it as world:remove(...), with a colon, got %s for the world",
+      describe(self)), 2)
+  end
   local record = find_record(self, item, 2)
+  self._records[item] = nil
+  record.removed = true
+  if record.kind == SOLID then self._solid_count = self._solid_count - 1 end
+  if self._busy then -- a move is walking the structures: take it out when it is done
+    local n = self._n_pending + 1
+    self._pending[n] = record
+    self._n_pending = n
+    return
+  end
   local kind = record.kind
   if kind == SOLID then
-    solids.remove(self, record)
+    solids.unhash(self, record)
   elseif kind == ACTOR then
     actors.remove(self, record)
   else
     solids.remove_layer(self, item)
   end
-  self._records[item] = nil
 end
 
 ---Tells the world that a box's position, size or wall_type changed outside world:move
 ---(a teleport), or that a tile layer's grid changed.
 ---@param item table a box or a tile layer handle of this world
 function World:update(item)
+  enter(self, "update")
   local record = find_record(self, item, 2)
   local kind = record.kind
   if kind == SOLID then
     check_box(item, "box", 2)
     check_wall_type(item, "box", 2)
-    solids.remove(self, record)
-    solids.insert(self, record)
+    check_span(self, item.x, item.width, "box.x", "the box")
+    check_span(self, item.y, item.height, "box.y", "the box")
+    solids.unhash(self, record)
+    solids.hash(self, record)
   elseif kind == ACTOR then
     check_box(item, "box", 2)
+    check_span(self, item.x, item.width, "box.x", "the box")
+    check_span(self, item.y, item.height, "box.y", "the box")
     actors.rehash_one(self, record)
   else
+    check_number(item.x, "layer.x", 2)
+    check_number(item.y, "layer.y", 2)
+    check_span(self, item.x, item.cols * item.tile_width, "layer.x", "the layer")
+    check_span(self, item.y, item.rows * item.tile_height, "layer.y", "the layer")
     layer.reread(item, 2)
+    solids.grow_layer(self, item) -- it may have moved
   end
 end
 
@@ -229,12 +339,20 @@ end
 ---@param item any
 ---@return boolean
 function World:has(item)
+  if getmetatable(self) ~= World then
+    error(format("call it as world:has(...), with a colon, got %s for the world",
+      describe(self)), 2)
+  end
   return self._records[item] ~= nil
 end
 
 ---Counts of the world's items: solids, actors, tile layers.
 ---@return integer solids, integer actors, integer layers
 function World:count()
+  if getmetatable(self) ~= World then
+    error(format("call it as world:count(...), with a colon, got %s for the world",
+      describe(self)), 2)
+  end
   return self._solid_count, #self._actor_list, #self._layers
 end
 
@@ -246,11 +364,13 @@ end
 ---@param method? "axis_sweep"|"swept"|"auto"|"seed"|"wall_type"|"min_axis"|"fat_cross"
 ---@return number x, number y, integer n, budge.Hit[] hits owned by the world, valid until the next move
 function World:move(actor, dx, dy, method)
+  if self._busy ~= false then enter(self, "move") end -- (one field read: this is hot)
   local record = self._records[actor]
   if record == nil or record.kind ~= ACTOR then
     if record then
-      error(format("actor must be an actor of this world, got %s (use world:update to move "
-        .. "it)", record.kind == SOLID and "a solid" or "a tile layer"), 2)
+      error(format("actor must be an actor of this world, got %s", record.kind == SOLID
+        and "a solid (world:move_solid moves solids)" or "a tile layer (world:move moves "
+        .. "actors only)"), 2)
     end
     error(format("actor must be an actor of this world (add it with world:add_actor), got %s",
       describe(actor)), 2)
@@ -258,7 +378,13 @@ function World:move(actor, dx, dy, method)
   check_box(actor, "actor", 2)
   check_number(dx, "dx", 2)
   check_number(dy, "dy", 2)
-  local entry = METHOD[method or "axis_sweep"]
+  local range, to_x, to_y = self.range, actor.x + dx, actor.y + dy
+  if to_x < -range or to_x + actor.width > range or to_y < -range
+    or to_y + actor.height > range then -- (tested inline: this entry is hot)
+    check_span(self, to_x, actor.width, "dx", "the actor")
+    check_span(self, to_y, actor.height, "dy", "the actor")
+  end
+  local entry = METHOD[method == nil and "axis_sweep" or method]
   if entry == nil then
     error(format("method must be %s, got %s", NAME_LIST, describe(method)), 2)
   end
@@ -267,7 +393,13 @@ function World:move(actor, dx, dy, method)
     error(format("actor.filter must be a function or nil, got %s", describe(filter)), 2)
   end
   self._n_hits = 0
-  entry.move(self, actor, dx, dy, filter, entry)
+  if filter == nil then -- no callback can run: nothing to guard
+    entry.move(self, actor, dx, dy, nil, entry)
+  else
+    guarded(self, "an actor's filter", entry.move, abandon_move, actor, dx, dy, filter, entry)
+  end
+  record.x, record.y, record.width, record.height = actor.x, actor.y, actor.width,
+    actor.height
   if not record.dirty then actors.moved(self, record) end
   hits.sort(self)
   return actor.x, actor.y, self._n_hits, self._hits
@@ -286,6 +418,7 @@ end
 ---@param dy number
 ---@return integer n, budge.Box[] crushed
 function World:move_solid(solid, dx, dy)
+  enter(self, "move_solid")
   local record = self._records[solid]
   if record == nil or record.kind ~= SOLID then
     error(format("solid must be a solid of this world (add it with world:add_solid), got %s",
@@ -294,7 +427,35 @@ function World:move_solid(solid, dx, dy)
   check_box(solid, "solid", 2)
   check_number(dx, "dx", 2)
   check_number(dy, "dy", 2)
-  return carry.move_solid(self, record, dx, dy)
+  check_span(self, solid.x + dx, solid.width, "dx", "the solid")
+  check_span(self, solid.y + dy, solid.height, "dy", "the solid")
+  local depth = self._crush_depth + 1
+  local crushed = self._crush_lists[depth]
+  if crushed == nil then
+    crushed = {}
+    self._crush_lists[depth] = crushed
+  end
+  self._crushed, self._n_crushed = crushed, 0
+  guarded(self, "an actor's filter (during world:move_solid)", carry.move_solid,
+    carry.abandon, record, dx, dy)
+  local n = self._n_crushed
+  for i = n + 1, #crushed do crushed[i] = nil end
+  -- on_crush runs once the move is complete: it may call into the world, move_solid too
+  -- (a nested call fills a list of its own); every call is made, and the first error
+  -- any of them raised propagates after the last
+  self._crush_depth = depth
+  local failure
+  for i = 1, n do
+    local victim = crushed[i]
+    local on_crush = victim.on_crush
+    if type(on_crush) == "function" then
+      local ok, err = pcall(on_crush, victim, solid)
+      if not ok and failure == nil then failure = {err} end
+    end
+  end
+  self._crush_depth = depth - 1
+  if failure then error(failure[1], 0) end
+  return n, crushed
 end
 
 ---Every solid, actor and tile layer (once, when any of its solid tiles does) that
@@ -305,8 +466,11 @@ end
 ---@param out? table reused for the result
 ---@return table out, integer n
 function World:query_point(x, y, out)
+  enter(self, "query_point")
   check_number(x, "x", 2)
   check_number(y, "y", 2)
+  check_span(self, x, 0, "x", "the point")
+  check_span(self, y, 0, "y", "the point")
   return query.area(self, x, y, 0, 0, check_out(out, "out"))
 end
 
@@ -319,6 +483,7 @@ end
 ---@param out? table reused for the result
 ---@return table out, integer n
 function World:query_rect(x, y, width, height, out)
+  enter(self, "query_rect")
   check_number(x, "x", 2)
   check_number(y, "y", 2)
   if not is_finite(width) or width < 0 then
@@ -327,6 +492,8 @@ function World:query_rect(x, y, width, height, out)
   if not is_finite(height) or height < 0 then
     error(format("height must be a finite number >= 0, got %s", describe(height)), 2)
   end
+  check_span(self, x, width, "x", "the rectangle")
+  check_span(self, y, height, "y", "the rectangle")
   return query.area(self, x, y, width, height, check_out(out, "out"))
 end
 
@@ -342,10 +509,15 @@ end
 ---@param out_t? number[] reused for the entry fractions
 ---@return table out, integer n, number[] out_t
 function World:query_segment(x1, y1, x2, y2, out, out_t)
+  enter(self, "query_segment")
   check_number(x1, "x1", 2)
   check_number(y1, "y1", 2)
   check_number(x2, "x2", 2)
   check_number(y2, "y2", 2)
+  check_span(self, x1, 0, "x1", "the segment")
+  check_span(self, y1, 0, "y1", "the segment")
+  check_span(self, x2, 0, "x2", "the segment")
+  check_span(self, y2, 0, "y2", "the segment")
   out = check_out(out, "out")
   out_t = check_out(out_t, "out_t")
   return query.segment(self, x1, y1, x2, y2, out, out_t)

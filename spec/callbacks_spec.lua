@@ -1,0 +1,241 @@
+-- The callback contract: a game's filter and on_crush callbacks are ordinary game code.
+-- They may raise errors and remove items; the world stays consistent either way, and any
+-- other call into the same world from a filter is refused with a clear error.
+local budge = require("budge")
+local box = require("fixtures.box")
+
+-- Everything a world can be asked about one item: where queries find it.
+local function found_at(world, item)
+  local out = world:query_rect(item.x, item.y, item.width, item.height)
+  for i = 1, #out do if out[i] == item then return true end end
+  return false
+end
+
+describe("an error raised by a filter", function()
+  it("during move_solid leaves the solid in the world, where it was going", function()
+    local world = budge.new_world()
+    world:add_solid(box(0, 100, 200, 16)) -- the floor
+    local door = world:add_solid(box(50, 40, 16, 40))
+    local wall = world:add_solid(box(150, 0, 16, 100))
+    local victim = world:add_actor(box(70, 60, 10, 10))
+    victim.filter = function() error("game bug") end
+    assert.has_error(function() world:move_solid(door, 10, 0) end, "game bug")
+    assert.same({60, 40}, {door.x, door.y})
+    assert.same({3, 1, 0}, {world:count()})
+    assert.is_true(found_at(world, door))
+    world:remove(wall)
+    assert.same({2, 1, 0}, {world:count()})
+    -- the floor and the door still stop actors
+    victim.filter = nil
+    local walker = world:add_actor(box(20, 80, 10, 10))
+    assert.same({20, 90}, {world:move(walker, 0, 50)})
+    assert.same({40 + 10, 90}, {world:move(walker, 100, 0)}) -- against the door at x = 60
+  end)
+
+  it("during a discrete move leaves the actor where it was, found there", function()
+    for _, method in ipairs(budge.METHODS) do
+      local world = budge.new_world()
+      world:add_solid(box(50, 0, 16, 100))
+      local actor = world:add_actor(box(30, 10, 10, 10))
+      actor.filter = function() error({code = 7}) end -- any value propagates unchanged
+      local ok, err = pcall(world.move, world, actor, 15, 0, method)
+      assert.is_false(ok)
+      assert.same({code = 7}, err, method)
+      assert.same({30, 10}, {actor.x, actor.y}, method)
+      assert.is_true(found_at(world, actor), method)
+      actor.filter = nil
+      assert.same({40, 10}, {world:move(actor, 15, 0, method)}, method)
+    end
+  end)
+
+  it("propagates with its message unchanged and leaves the world usable", function()
+    local world = budge.new_world()
+    world:add_tiles({{1, 1, 1}}, 16, 16, {y = 50})
+    local actor = world:add_actor(box(5, 0, 10, 10))
+    actor.filter = function() error("no floor for you", 0) end
+    assert.has_error(function() world:move(actor, 0, 100) end, "no floor for you")
+    actor.filter = nil
+    assert.same({5, 40}, {world:move(actor, 0, 100)})
+    assert.same({{actor}, 1}, {world:query_point(10, 45)})
+  end)
+end)
+
+describe("on_crush", function()
+  it("may move the solid that crushed (a door that reopens); every victim is called", function()
+    local world = budge.new_world()
+    world:add_solid(box(0, 100, 300, 16))
+    local crusher = world:add_solid(box(0, 0, 300, 40))
+    local victims, calls = {}, {}
+    for i = 1, 3 do
+      victims[i] = world:add_actor(box(i * 60, 70, 10, 30))
+      victims[i].on_crush = function(actor, solid)
+        calls[#calls + 1] = actor
+        assert.equal(crusher, solid)
+        if #calls == 1 then
+          local n, crushed = world:move_solid(crusher, 0, -20) -- reopen
+          assert.same({0, 20}, {n, crusher.y})
+          assert.equal(0, #crushed)
+        end
+      end
+    end
+    local n, crushed = world:move_solid(crusher, 0, 50)
+    assert.equal(3, n)
+    assert.same(victims, crushed)
+    assert.same(victims, calls)
+  end)
+
+  it("errors propagate after every on_crush was called", function()
+    local world = budge.new_world()
+    world:add_solid(box(0, 100, 300, 16))
+    local crusher = world:add_solid(box(0, 0, 300, 40))
+    local calls = 0
+    for i = 1, 3 do
+      local victim = world:add_actor(box(i * 60, 70, 10, 30))
+      victim.on_crush = function()
+        calls = calls + 1
+        error("crushed " .. i, 0)
+      end
+    end
+    assert.has_error(function() world:move_solid(crusher, 0, 50) end, "crushed 1")
+    assert.equal(3, calls)
+    assert.same({0, 50}, {crusher.x, crusher.y})
+    assert.is_true(found_at(world, crusher))
+  end)
+end)
+
+describe("a filter that removes what it touches (brick breaking)", function()
+  it("breaks each brick once and never meets it again in that move", function()
+    for _, method in ipairs(budge.METHODS) do
+      local world = budge.new_world()
+      local bricks = {}
+      for i = 1, 5 do bricks[i] = world:add_solid(box(40 + i * 20, 0, 20, 20)) end
+      local wall = world:add_solid(box(300, 0, 10, 20))
+      local ball = world:add_actor(box(0, 5, 8, 8))
+      local broken = {}
+      ball.filter = function(_, other)
+        if other ~= wall then
+          broken[#broken + 1] = other
+          world:remove(other)
+          return false -- breaks through
+        end
+        return true
+      end
+      local distance = budge.CONTINUOUS[method] and 400 or 55
+      world:move(ball, distance, 0, method)
+      local label = method .. " broke " .. #broken
+      for i = 1, #broken do
+        assert.is_false(world:has(broken[i]), label)
+        for j = i + 1, #broken do assert.are_not.equal(broken[i], broken[j], label) end
+      end
+      assert.same({6 - #broken, 1, 0}, {world:count()}, label)
+      if budge.CONTINUOUS[method] then
+        assert.same({5, 292}, {#broken, ball.x}, label)
+      end
+      local standing = {}
+      for i = 1, 5 do if world:has(bricks[i]) then standing[#standing + 1] = bricks[i] end end
+      assert.same(standing, (world:query_rect(64, 0, 96, 20)), label)
+    end
+  end)
+
+  it("may remove a tile layer, which no move then meets", function()
+    for _, method in ipairs(budge.METHODS) do
+      local world = budge.new_world()
+      local layer = world:add_tiles({{1, 1, 1, 1}}, 16, 16, {y = 100})
+      local other = world:add_tiles({{1, 1, 1, 1}}, 16, 16, {y = 200})
+      local actor = world:add_actor(box(10, 80, 10, 10))
+      actor.filter = function(_, item)
+        if item == layer then world:remove(layer) end
+        return true
+      end
+      local distance = budge.CONTINUOUS[method] and 200 or 15
+      world:move(actor, 0, distance, method)
+      assert.is_false(world:has(layer), method)
+      assert.same({0, 0, 1}, {world:count()}, method)
+      actor.filter = nil
+      world:update(actor)
+      assert.same({10, 190}, {world:move(actor, 0, 300)}, method) -- the other layer
+      assert.is_true(world:has(other))
+    end
+  end)
+end)
+
+describe("calls into the same world from a filter", function()
+  local CALLS = {
+    {"move", function(world, actor) world:move(actor, 1, 0) end},
+    {"move_solid", function(world, _, solid) world:move_solid(solid, 1, 0) end},
+    {"add_solid", function(world) world:add_solid(box(0, 0, 1, 1)) end},
+    {"add_actor", function(world) world:add_actor(box(0, 0, 1, 1)) end},
+    {"add_tiles", function(world) world:add_tiles({{1}}, 1, 1) end},
+    {"update", function(world, actor) world:update(actor) end},
+    {"query_point", function(world) world:query_point(0, 0) end},
+    {"query_rect", function(world) world:query_rect(0, 0, 1, 1) end},
+    {"query_segment", function(world) world:query_segment(0, 0, 1, 1) end},
+  }
+  for _, case in ipairs(CALLS) do
+    it("refuse world:" .. case[1] .. ", naming the filter and the call", function()
+      local world = budge.new_world()
+      local solid = world:add_solid(box(50, 0, 10, 100))
+      local actor = world:add_actor(box(0, 0, 10, 10))
+      actor.filter = function() case[2](world, actor, solid) return true end
+      assert.has_error(function() world:move(actor, 100, 0) end, ("world:%s was called from "
+        .. "inside an actor's filter: a callback may remove items from its own world "
+        .. "(world:remove) or use another world, but make no other call into its own")
+        :format(case[1]))
+      assert.same({0, 0}, {actor.x, actor.y})
+      actor.filter = nil
+      assert.same({40, 0}, {world:move(actor, 100, 0)}) -- and the world works on
+    end)
+  end
+
+  it("refuse them during move_solid too", function()
+    local world = budge.new_world()
+    local platform = world:add_solid(box(0, 50, 100, 10))
+    local rider = world:add_actor(box(10, 40, 10, 10))
+    rider.filter = function() world:query_point(1, 1) return true end
+    world:add_solid(box(0, 0, 100, 10))
+    assert.has_error(function() world:move_solid(platform, 0, -20) end, "world:query_point was "
+      .. "called from inside an actor's filter (during world:move_solid): a callback may remove "
+      .. "items from its own world (world:remove) or use another world, but make no other call "
+      .. "into its own")
+    assert.same({0, 30}, {platform.x, platform.y})
+    assert.is_true(found_at(world, platform))
+  end)
+end)
+
+describe("calling a method with . instead of :", function()
+  local world = budge.new_world()
+  local actor = world:add_actor(box(0, 0, 1, 1))
+  for _, name in ipairs({"add_solid", "add_actor", "add_tiles", "update", "move", "move_solid",
+    "query_point", "query_rect", "query_segment", "remove", "has", "count"}) do
+    it("says so for world." .. name, function()
+      assert.has_error(function() world[name](actor, 1, 0) end,
+        "call it as world:" .. name .. "(...), with a colon, got a table for the world")
+    end)
+  end
+end)
+
+describe("clear errors", function()
+  it("for a method that is false, a solid moved with move, a handle added twice", function()
+    local world = budge.new_world()
+    local actor = world:add_actor(box(0, 0, 1, 1))
+    local solid = world:add_solid(box(5, 0, 1, 1))
+    local layer = world:add_tiles({{1}}, 16, 16)
+    assert.has_error(function() world:move(actor, 1, 0, false) end, 'method must be "axis_sweep", '
+      .. '"swept", "auto", "seed", "wall_type", "min_axis" or "fat_cross", got false')
+    assert.has_error(function() world:move(solid, 1, 0) end,
+      "actor must be an actor of this world, got a solid (world:move_solid moves solids)")
+    assert.has_error(function() world:add_solid(layer) end, "box is already in this world (as tiles)")
+  end)
+
+  it("queries never read a box field the game overwrote after the world checked it", function()
+    local world = budge.new_world()
+    local solid = world:add_solid(box(0, 0, 10, 10))
+    local actor = world:add_actor(box(20, 0, 10, 10))
+    solid.x, actor.y = "5", "oops"
+    assert.same({{solid}, 1}, {world:query_point(5, 5)})
+    assert.same({{actor}, 1}, {world:query_point(25, 5)})
+    assert.has_error(function() world:move(actor, 1, 0) end,
+      'actor.y must be a finite number, got "oops"')
+    assert.has_error(function() world:update(solid) end, 'box.x must be a finite number, got "5"')
+  end)
+end)
