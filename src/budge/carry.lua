@@ -77,8 +77,11 @@ local function solid_phase(world, solid, oneway, is_x, delta, ride_stamp)
   end
   for k = 1, count do
     local record = near[k]
-    if not record.removed then -- (one a filter removed, earlier in this move, is skipped)
-      local actor = record.item
+    local actor = record.item
+    local filter = actor.filter
+    -- skipped: an actor a filter removed earlier in this move, and one whose own filter
+    -- lets it pass through this solid (it is neither pushed nor carried by it)
+    if not record.removed and (type(filter) ~= "function" or filter(actor, solid)) then
       local ax, ay, aw, ah = actor.x, actor.y, actor.width, actor.height
       local target
       if is_x then
@@ -157,8 +160,10 @@ function carry.move_solid(world, record, dx, dy)
     for k = 1, near_actors(world, x, y, width, height) do
       local near_record = near[k]
       local actor = near_record.item
+      local filter = actor.filter
       if not near_record.removed and actor.x < x + width and x < actor.x + actor.width
-        and actor.y < y + height and y < actor.y + actor.height then
+        and actor.y < y + height and y < actor.y + actor.height
+        and (type(filter) ~= "function" or filter(actor, solid)) then
         crush(world, near_record)
       end
     end

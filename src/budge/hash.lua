@@ -131,8 +131,6 @@ function Hash:insert(record, x, y, width, height)
   end
 end
 
----Removes `record` from the cells it was inserted in.
----@param record budge.HashRecord
 local function unlist(list, record, field)
   local slot, count = record[field], #list
   local last = list[count]
@@ -141,6 +139,8 @@ local function unlist(list, record, field)
   record[field] = nil
 end
 
+---Removes `record` from the hash.
+---@param record budge.HashRecord
 function Hash:remove(record)
   unlist(self._all, record, "_slot")
   if record._big_slot then unlist(self._big, record, "_big_slot") return end

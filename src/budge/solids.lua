@@ -119,6 +119,7 @@ local clip_to_boxes = solids.clip_to_boxes
 ---@return number? enter, number? leave
 function solids.clip_to_bounds(world, x, y, width, height, dx, dy)
   local bounds = world._bounds
+  if bounds.min_x > bounds.max_x then return nil, nil end -- nothing solid was ever added
   local enter, leave = clip_axis(x, dx, bounds.min_x - width, bounds.max_x, 0, 1, false)
   if enter == nil then return nil, nil end
   enter, leave = clip_axis(y, dy, bounds.min_y - height, bounds.max_y, enter, leave, false)

@@ -1,0 +1,208 @@
+-- What a hostile tester found, each pinned at the case that showed it: grids read wrong,
+-- calls that never ended, results that were wrong.
+local budge = require("budge")
+local box = require("fixtures.box")
+
+local function position(world, actor, dx, dy, method)
+  local x, y = world:move(actor, dx, dy, method)
+  return {x, y}
+end
+
+describe("tile grids", function()
+  it("read a Tiled layer in add_tiles as merge reads it, and check its size", function()
+    local world = budge.new_world()
+    local layer = world:add_tiles({width = 3, height = 2, data = {0, 0, 0, 0, 7, 0}}, 16, 16)
+    assert.same({3, 2}, {layer.cols, layer.rows})
+    assert.has_error(function() world:add_tiles({width = 3, height = 2, data = {0, 0, 0, 1}}, 16, 16) end,
+      "grid.data has 4 tiles but grid.width x grid.height is 3x2 = 6")
+    assert.has_error(function() world:add_tiles({width = 3, height = 0.5, data = {1}}, 16, 16) end,
+      "grid.height must be a whole number >= 1 (rows of the Tiled layer), got 0.5")
+  end)
+
+  it("take nil as an empty tile anywhere, the same on every interpreter", function()
+    local world = budge.new_world()
+    local layer = world:add_tiles({{1, nil, 1}, {nil, nil, 1}}, 16, 16)
+    assert.same({3, 2}, {layer.cols, layer.rows}) -- (# says 1 column on LuaJIT)
+    local actor = world:add_actor(box(18, -20, 8, 8))
+    assert.same({18, 20}, position(world, actor, 0, 40)) -- through the hole in column 2
+    actor.x, actor.y = 34, -20
+    assert.same({34, -8}, position(world, actor, 0, 40)) -- onto column 3
+    local flat = world:add_tiles({nil, 1, nil, nil}, 16, 16, {width = 2, x = 100})
+    assert.same({2, 1}, {flat.cols, flat.rows})
+    assert.has_error(function() world:add_tiles({{1, 1}, {1, 1, 1}}, 16, 16, {width = 2}) end,
+      "grid[2] has a tile in column 3, beyond opts.width (2)")
+    assert.has_error(function() world:add_tiles({{1}, nil, {1}}, 16, 16) end,
+      "grid[2] must be a table (a row of tiles), got nil")
+  end)
+end)
+
+describe("moving solids", function()
+  it("never carry an actor across themselves when they retract from a crush", function()
+    local world = budge.new_world()
+    world:add_solid(box(0, 100, 100, 16))
+    local crusher = world:add_solid(box(0, 0, 100, 40))
+    local actor = world:add_actor(box(40, 70, 10, 30))
+    local n = world:move_solid(crusher, 0, 50) -- crushed against the floor
+    assert.equal(1, n)
+    assert.same({40, 70}, {actor.x, actor.y})
+    n = world:move_solid(crusher, 0, -30) -- retracts: the actor stays where it is
+    assert.same({40, 70}, {actor.x, actor.y})
+    assert.same({0, 20}, {crusher.x, crusher.y})
+    assert.equal(0, n) -- and is no longer inside (the crusher's bottom is at 60)
+  end)
+
+  it("report an actor left inside them, whichever way they move", function()
+    for _, move in ipairs({{0, 5}, {0, -5}, {5, 0}, {-5, 0}}) do
+      local world = budge.new_world()
+      local block = world:add_solid(box(0, 0, 100, 100))
+      local actor = world:add_actor(box(40, 40, 10, 10)) -- teleported inside
+      local n, crushed = world:move_solid(block, move[1], move[2])
+      assert.same({1, actor}, {n, crushed[1]})
+      assert.same({40, 40}, {actor.x, actor.y}) -- never thrown across the block
+    end
+  end)
+
+  it("push only with the leading face", function()
+    local world = budge.new_world()
+    local pusher = world:add_solid(box(0, 0, 20, 20))
+    local ahead = world:add_actor(box(25, 5, 10, 10))
+    local behind = world:add_actor(box(-15, 5, 10, 10)) -- straddles nothing, just behind
+    world:move_solid(pusher, 10, 0)
+    assert.same({30, 5}, {ahead.x, ahead.y})
+    assert.same({-15, 5}, {behind.x, behind.y})
+  end)
+end)
+
+describe("a moved tile layer", function()
+  it("is met where world:update saw it, by every method", function()
+    for _, method in ipairs({"axis_sweep", "swept"}) do
+      local world = budge.new_world()
+      local layer = world:add_tiles({{1}, {1}}, 16, 16)
+      local actor = world:add_actor(box(200, 5, 10, 10))
+      layer.x = 300
+      world:update(layer)
+      assert.same({290, 5}, position(world, actor, 200, 0, method), method)
+    end
+  end)
+end)
+
+describe("a moving solid and an actor whose filter ignores it", function()
+  it("neither push nor carry nor crush each other", function()
+    local world = budge.new_world()
+    local platform = world:add_solid(box(0, 50, 100, 10))
+    local ghost = world:add_actor(box(10, 40, 10, 10))
+    local pushed = world:add_actor(box(110, 32, 10, 10))
+    ghost.filter = function(_, other) return other ~= platform end
+    world:move_solid(platform, 0, -20)
+    assert.same({10, 40}, {ghost.x, ghost.y})
+    local n = world:move_solid(platform, 20, 0)
+    assert.same({0, 120, 10, 40}, {n, pushed.x, ghost.x, ghost.y})
+  end)
+end)
+
+describe("axis_sweep on tile layers at origins not exact in binary", function()
+  it("slides along a ceiling it bumped its head on, at 792 inexact origins", function()
+    local snags = 0
+    for _, tile in ipairs({16, 10, 8, 3, 1, 0.1, 0.3, 0.7}) do
+      for k = 1, 99 do
+        local origin = k / 100 + (k % 7) * 0.3
+        local grid = {}
+        for r = 1, 3 do grid[r] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1} end
+        local world = budge.new_world()
+        world:add_tiles(grid, tile, tile, {y = origin})
+        local actor = world:add_actor(box(tile * 2.25, origin + 8 * tile, tile / 2, tile / 2))
+        world:move(actor, 0, -100 * tile) -- bumps its head
+        local x0 = actor.x
+        if world:move(actor, tile / 3, 0) ~= x0 + tile / 3 then snags = snags + 1 end
+      end
+    end
+    assert.equal(0, snags) -- 135 before the spans were checked both ways
+  end)
+
+  it("slides along floors of 0.1 px tiles at every row", function()
+    local snags = 0
+    for row = 1, 100 do
+      local world = budge.new_world()
+      local grid = {}
+      for r = 1, row do grid[r] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0} end
+      grid[row + 1] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1}
+      world:add_tiles(grid, 0.1, 0.1)
+      local actor = world:add_actor(box(0.05, -1, 0.2, 0.2))
+      world:move(actor, 0, 50) -- lands on the floor
+      local x = world:move(actor, 0.6, 0)
+      if x ~= 0.05 + 0.6 then snags = snags + 1 end
+    end
+    assert.equal(0, snags)
+  end)
+end)
+
+describe("zero-size actors", function()
+  it("stop on faces like any actor, with axis_sweep, auto and swept", function()
+    for _, method in ipairs({"axis_sweep", "auto", "swept"}) do
+      for _, size in ipairs({{0, 0}, {0, 8}, {8, 0}}) do
+        local world = budge.new_world()
+        world:add_tiles({{1, 1, 1, 1}}, 16, 16, {y = 100})
+        world:add_solid(box(100, 0, 16, 100))
+        local actor = world:add_actor(box(5, 50, size[1], size[2]))
+        local label = method .. " " .. size[1] .. "x" .. size[2]
+        assert.same({5, 100 - size[2]}, position(world, actor, 0, 200, method), label)
+        assert.same({5, 100 - size[2]}, position(world, actor, 0, 10, method), label) -- rests
+        actor.y = 50
+        world:update(actor)
+        assert.same({100 - size[1], 50}, position(world, actor, 300, 0, method), label)
+        assert.same({100 - size[1], 50}, position(world, actor, 5, 0, method), label)
+      end
+    end
+  end)
+end)
+
+describe("swept", function()
+  it("never travels further than asked when it slides", function()
+    local random = require("fixtures.random").new(99)
+    local world = budge.new_world()
+    world:add_solid(box(-1000, 100, 3000, 16))
+    local actor = world:add_actor(box(0, 80, 10, 20))
+    local past = 0
+    for _ = 1, 2000 do
+      actor.x, actor.y = random() * 100, 80 - random() * 2 -- above the floor: met mid-move
+      world:update(actor)
+      local x0 = actor.x
+      local dx = random() * 37 - 18
+      world:move(actor, dx, 3 + random(), "swept")
+      if dx >= 0 then past = past + (actor.x > x0 + dx and 1 or 0)
+      else past = past + (actor.x < x0 + dx and 1 or 0) end
+    end
+    assert.equal(0, past)
+  end)
+end)
+
+describe("the world's range", function()
+  it("refuses boxes, moves and queries beyond it with a clear error", function()
+    local world = budge.new_world()
+    assert.equal(2 ^ 30, world.range)
+    assert.has_error(function() world:add_solid(box(6e17, 0, 16, 16)) end,
+      "box.x must keep the box within this world's range, -1073741824 to 1073741824 (2^24 cells "
+      .. "of 64 px, at most 2^40 px), got 6e+17")
+    local actor = world:add_actor(box(0, 0, 8, 8))
+    assert.has_error(function() world:move(actor, 1.7e308, 0) end,
+      "dx must keep the actor within this world's range, -1073741824 to 1073741824 (2^24 cells "
+      .. "of 64 px, at most 2^40 px), got 1.7e+308")
+    assert.same({0, 0}, {actor.x, actor.y})
+    assert.has_error(function() world:query_rect(1e300, 0, 1, 1) end,
+      "x must keep the rectangle within this world's range, -1073741824 to 1073741824 (2^24 "
+      .. "cells of 64 px, at most 2^40 px), got 1e+300")
+    assert.equal(2 ^ 40, budge.new_world({cell_size = 2 ^ 20}).range)
+  end)
+
+  it("does bounded work for huge boxes, tiny cells and rectangles over the whole range", function()
+    local world = budge.new_world({cell_size = 1e-3})
+    local solid = world:add_solid(box(0, 0, 16, 16)) -- 16000 x 16000 cells
+    local big = budge.new_world()
+    big:add_solid(box(-1e6, -1e6, 2e6, 2e6))
+    local actor = big:add_actor(box(-5e8, 0, 8, 8))
+    assert.same({{solid}, 1}, {world:query_point(8, 8)})
+    assert.same(2, select(2, big:query_rect(-2 ^ 29, -2 ^ 29, 2 ^ 30, 2 ^ 30)))
+    assert.same({-1e6 - 8, 0}, position(big, actor, 1e9, 0))
+    assert.same({-1e6 - 8, 0}, position(big, actor, 1e9, 0, "swept"))
+  end)
+end)
