@@ -204,5 +204,22 @@ describe("the world's range", function()
     assert.same(2, select(2, big:query_rect(-2 ^ 29, -2 ^ 29, 2 ^ 30, 2 ^ 30)))
     assert.same({-1e6 - 8, 0}, position(big, actor, 1e9, 0))
     assert.same({-1e6 - 8, 0}, position(big, actor, 1e9, 0, "swept"))
+    -- a swept move across two solids at the ends of the range (17.8 s on Lua 5.4 before
+    -- its steps were capped)
+    local far = budge.new_world({cell_size = 1})
+    local r = far.range
+    far:add_solid(box(-r, -r, 1, 1))
+    far:add_solid(box(r - 1, r - 1, 1, 1))
+    local runner = far:add_actor(box(-r + 10, 0, 1, 1))
+    assert.same({r - 10, 0}, position(far, runner, 2 * r - 20, 0, "swept"))
+  end)
+
+  it("crushes an actor a moving solid would push beyond it", function()
+    local world = budge.new_world({cell_size = 1})
+    local r = world.range
+    local solid = world:add_solid(box(r - 20, 0, 10, 10))
+    local actor = world:add_actor(box(r - 10, 0, 10, 10))
+    local n, crushed = world:move_solid(solid, 10, 0)
+    assert.same({1, actor, r - 10}, {n, crushed[1], actor.x})
   end)
 end)

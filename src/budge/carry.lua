@@ -39,6 +39,10 @@ local function shove(world, record, is_x, target)
   probe.actor, probe.filter = actor, filter
   local x, y = actor.x, actor.y
   local pos = is_x and x or y
+  local range = world.range
+  if target < -range or target + (is_x and actor.width or actor.height) > range then
+    return false -- pushed out of the world's range: crushed instead, left where it is
+  end
   if target ~= pos then
     if is_x then
       pos = axis_phase(world, actor, filter, true, x, y, actor.width, actor.height, target - pos)
@@ -55,7 +59,7 @@ local function shove(world, record, is_x, target)
 end
 
 local function crush(world, record)
-  if record.crush_stamp == world._crush_stamp then return end
+  if record.removed or record.crush_stamp == world._crush_stamp then return end
   record.crush_stamp = world._crush_stamp
   local n = world._n_crushed + 1
   world._crushed[n] = record.item
@@ -77,6 +81,7 @@ local function solid_phase(world, solid, oneway, is_x, delta, ride_stamp)
   end
   for k = 1, count do
     local record = near[k]
+    if world._records[solid] == nil then return end -- a filter removed the solid itself
     local actor = record.item
     local filter = actor.filter
     -- skipped: an actor a filter removed earlier in this move, and one whose own filter
@@ -150,12 +155,13 @@ function carry.move_solid(world, record, dx, dy)
   solids.unhash(world, record) -- out of every actor's way while it moves
   local oneway = record.oneway
   if dx ~= 0 then solid_phase(world, solid, oneway, true, dx, stamp) end
-  if dy ~= 0 then solid_phase(world, solid, oneway, false, dy, stamp) end
-  if not record.removed then solids.hash(world, record) end
+  if dy ~= 0 and not record.removed then solid_phase(world, solid, oneway, false, dy, stamp) end
   world._n_hits = 0
   -- whatever is left inside the solid (it was inside already, or behind a face the
-  -- solid never pushes with) is reported crushed: no actor ends inside it unreported
-  if not oneway then
+  -- solid never pushes with) is reported crushed: no actor ends inside it unreported.
+  -- (Before the solid is hashed again: a filter here that raises an error leaves the
+  -- record at the start, which carry.abandon counts from.)
+  if not oneway and not record.removed then
     local x, y, width, height = solid.x, solid.y, solid.width, solid.height
     for k = 1, near_actors(world, x, y, width, height) do
       local near_record = near[k]
@@ -168,6 +174,7 @@ function carry.move_solid(world, record, dx, dy)
       end
     end
   end
+  if not record.removed then solids.hash(world, record) end
 end
 
 ---What an error raised by a filter during carry.move_solid leaves: the solid where it

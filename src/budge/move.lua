@@ -38,6 +38,10 @@ local ceil, sort, format = math.ceil, table.sort, string.format
 -- A "swept" move that meets a face slides along it; three rounds cover a face, then a
 -- second face that stops the slide, then a corner.
 local MAX_SLIDES = 3
+-- A swept move looks at the world in steps of a cell, at most this many: beyond, the
+-- steps grow (each still exact; the hash walks its box list for a big step) so that a
+-- move across far-apart solids does bounded work.
+local MAX_STEPS = 4096
 
 local move = {}
 
@@ -89,8 +93,10 @@ local function axis_phase(world, actor, filter, is_x, pos, cross, size, cross_si
   local layers = world._layers
   for k = 1, #layers do
     local tiles = layers[k]
-    -- a layer removed by a filter earlier in this move (or by this call) is skipped
-    if world._records[tiles] and (filter == nil or filter(actor, tiles)) and world._records[tiles] then
+    -- a layer removed by a filter earlier in this move is skipped (one the filter removes
+    -- now, returning true, is met this once, as a solid is)
+    local record = world._records[tiles]
+    if record and (filter == nil or filter(actor, tiles)) then
       local face, count = tile_face(tiles, probe)
       local stop = face
       if face then
@@ -99,7 +105,7 @@ local function axis_phase(world, actor, filter, is_x, pos, cross, size, cross_si
       end -- the same outcomes as sweep.stop_forward / stop_backward give
       if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
         if stop ~= best then best = stop; world._n_hits = first_hit end
-        local id = world._records[tiles].id
+        local id = record.id
         local cols, rows = probe.cols, probe.rows
         for c = 1, count do
           local col, row = cols[c], rows[c]
@@ -157,7 +163,7 @@ local function advance(world, x, y, dx, dy, round)
   local adx, ady = dx < 0 and -dx or dx, dy < 0 and -dy or dy
   local length = (adx > ady and adx or ady) * (leave - enter)
   local chunks = ceil(length / world.cell_size)
-  if chunks < 1 then chunks = 1 end
+  if chunks < 1 then chunks = 1 elseif chunks > MAX_STEPS then chunks = MAX_STEPS end
   local span = leave - enter
   for k = 1, chunks do
     local t_from = enter + span * (k - 1) / chunks

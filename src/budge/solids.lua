@@ -163,9 +163,9 @@ function solids.gather(world, x, y, width, height)
   local layers, records = world._layers, world._records
   for k = 1, #layers do
     local tiles = layers[k]
-    if records[tiles] and (filter == nil or filter(actor, tiles)) then
-      local record = records[tiles] -- (again: the filter may have removed it)
-      if record then gather_layer(tiles, x, y, width, height, set, record.id) end
+    local record = records[tiles] -- (read before the filter, which may remove the layer)
+    if record and (filter == nil or filter(actor, tiles)) then
+      gather_layer(tiles, x, y, width, height, set, record.id)
     end
   end
   return set

@@ -110,8 +110,12 @@ local function check_rows(rows, width, level)
 end
 
 local function check_width(cols, message, level)
-  if type(cols) ~= "number" or cols < 1 or cols % 1 ~= 0 or cols > MAX_TILES then
+  if type(cols) ~= "number" or cols < 1 or cols % 1 ~= 0 then
     error(format(message, describe(cols)), level + 1)
+  end
+  if cols > MAX_TILES then
+    error(format("a grid of %s tiles per row is more than the %d one layer holds: split it "
+      .. "into layers", describe(cols), MAX_TILES), level + 1)
   end
 end
 

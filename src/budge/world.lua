@@ -87,6 +87,8 @@ local world = {}
 ---@field package _busy string|false the callback running now ("an actor's filter"), or false
 ---@field package _pending budge.Record[] items removed while a callback ran, to take out after
 ---@field package _n_pending integer
+---@field package _pending_actors integer how many of them are actors
+---@field package _pending_layers integer and tile layers
 local World = {}
 World.__index = World
 
@@ -128,7 +130,7 @@ function world.new_world(opts)
     _found = {},
     _near = {}, _crushed = {}, _n_crushed = 0, _crush_stamp = 0,
     _crush_lists = {}, _crush_depth = 0,
-    _busy = false, _pending = {}, _n_pending = 0,
+    _busy = false, _pending = {}, _n_pending = 0, _pending_actors = 0, _pending_layers = 0,
   }, World)
 end
 
@@ -182,7 +184,7 @@ local function flush(self)
     elseif kind == ACTOR then actors.remove(self, record)
     else solids.remove_layer(self, record.item) end
   end
-  self._n_pending = 0
+  self._n_pending, self._pending_actors, self._pending_layers = 0, 0, 0
 end
 
 -- Runs `body(self, ...)` as the callback `busy` may interrupt: world:remove only marks
@@ -294,6 +296,8 @@ function World:remove(item)
     local n = self._n_pending + 1
     self._pending[n] = record
     self._n_pending = n
+    if record.kind == ACTOR then self._pending_actors = self._pending_actors + 1
+    elseif record.kind == TILES then self._pending_layers = self._pending_layers + 1 end
     return
   end
   local kind = record.kind
@@ -353,7 +357,8 @@ function World:count()
     error(format("call it as world:count(...), with a colon, got %s for the world",
       describe(self)), 2)
   end
-  return self._solid_count, #self._actor_list, #self._layers
+  return self._solid_count, #self._actor_list - self._pending_actors,
+    #self._layers - self._pending_layers
 end
 
 ---Moves `actor` by (dx, dy) against the world's solids and tiles, writes its new
@@ -448,7 +453,8 @@ function World:move_solid(solid, dx, dy)
   for i = 1, n do
     local victim = crushed[i]
     local on_crush = victim.on_crush
-    if type(on_crush) == "function" then
+    -- (a victim an earlier on_crush removed from the world is not called)
+    if type(on_crush) == "function" and self._records[victim] then
       local ok, err = pcall(on_crush, victim, solid)
       if not ok and failure == nil then failure = {err} end
     end
