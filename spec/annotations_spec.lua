@@ -2,17 +2,9 @@
 -- is the checker): every function of a src/budge module that is not local carries
 -- ---@param for each parameter and ---@return when it returns a value, and every field
 -- budge.new_world puts into a world is declared on budge.World.
-local lfs = require("lfs")
 local files = require("spec.support.files")
 
-local function module_files()
-  local paths = {}
-  for name in lfs.dir("src/budge") do
-    if name:match("%.lua$") then paths[#paths + 1] = "src/budge/" .. name end
-  end
-  table.sort(paths)
-  return paths
-end
+local module_files = files.module_files
 
 local function lines_of(text)
   local lines = {}

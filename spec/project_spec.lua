@@ -11,14 +11,7 @@ local function load_rockspec()
   return env
 end
 
-local function module_files()
-  local paths = {}
-  for name in lfs.dir("src/budge") do
-    if name:match("%.lua$") then paths[#paths + 1] = "src/budge/" .. name end
-  end
-  table.sort(paths)
-  return paths
-end
+local module_files = files.module_files
 
 describe("the project", function()
   it("has a bare semver _VERSION with a CHANGELOG entry", function()

@@ -19,4 +19,16 @@ function files.load(code, name, env)
   return assert(load(code, name, "t", env))
 end
 
+---The library's module files, src/budge/*.lua, sorted.
+---@return string[]
+function files.module_files()
+  local lfs = require("lfs")
+  local paths = {}
+  for name in lfs.dir("src/budge") do
+    if name:match("%.lua$") then paths[#paths + 1] = "src/budge/" .. name end
+  end
+  table.sort(paths)
+  return paths
+end
+
 return files

@@ -10,7 +10,7 @@
 -- budge.HashRecord. Cells are never freed: a world whose boxes stay in one area stops
 -- allocating once every cell it uses exists. Nothing here iterates with pairs().
 --
--- Bounded work: a record spanning more than BIG_CELLS cells is kept in a list of big
+-- Bounded work: a record spanning more than BIG_CELLS (4096) cells is kept in a list of big
 -- records instead of its cells, and a scan of a rectangle touching more cells than the
 -- hash holds records walks the list of all records instead of the cells, so no call
 -- walks more cells than it has records to find. Keys are exact while |cx| and |cy| stay
@@ -47,6 +47,7 @@ local hash = {}
 ---@field package _cells table<number, budge.HashRecord[]> cell key -> records, in insertion order
 ---@field package _stamp integer the counter scans take their stamps from
 ---@field package _all budge.HashRecord[] every record, in no particular order
+---@field package _n integer how many (#_all, kept as a field: `#` is a search on LuaJIT)
 ---@field package _big budge.HashRecord[] the records spanning more than BIG_CELLS cells
 local Hash = {}
 Hash.__index = Hash
@@ -59,14 +60,14 @@ Hash.__index = Hash
 -- bench/world.lua --profile boxes` and `--profile merged`, median of 5, 2026-12-01).
 local KEY_STRIDE = 2 ^ 26
 local KEY_OFFSET = 2 ^ 25 * (KEY_STRIDE + 1)
-local BIG_CELLS = 64
+local BIG_CELLS = 4096
 
 ---A new, empty hash.
 ---@param cell_size number > 0, checked by the caller
 ---@return budge.Hash
 function hash.new(cell_size)
-  return setmetatable({cell_size = cell_size, _cells = {}, _stamp = 0, _all = {}, _big = {}},
-    Hash)
+  return setmetatable({cell_size = cell_size, _cells = {}, _stamp = 0, _all = {}, _n = 0,
+    _big = {}}, Hash)
 end
 
 ---A fresh stamp for one scan: records visited in that scan carry it.
@@ -109,8 +110,8 @@ function Hash:insert(record, x, y, width, height)
   local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
   record._cx0, record._cy0, record._cx1, record._cy1 = cx0, cy0, cx1, cy1
   local all = self._all
-  local slot = #all + 1
-  all[slot], record._slot = record, slot
+  local slot = self._n + 1
+  all[slot], record._slot, self._n = record, slot, slot
   if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > BIG_CELLS then
     local big = self._big
     local big_slot = #big + 1
@@ -143,6 +144,7 @@ end
 ---@param record budge.HashRecord
 function Hash:remove(record)
   unlist(self._all, record, "_slot")
+  self._n = self._n - 1
   if record._big_slot then unlist(self._big, record, "_big_slot") return end
   local cells = self._cells
   for cy = record._cy0, record._cy1 do
@@ -176,6 +178,19 @@ function Hash:moved(record, x, y, width, height)
   end
 end
 
+-- Appends to `out` the records of list[1..count] whose cells meet (cx0..cx1, cy0..cy1).
+local function list_touching(list, count, cx0, cy0, cx1, cy1, out, n)
+  for i = 1, count do
+    local record = list[i]
+    if record._cx0 <= cx1 and cx0 <= record._cx1 and record._cy0 <= cy1
+      and cy0 <= record._cy1 then
+      n = n + 1
+      out[n] = record
+    end
+  end
+  return n
+end
+
 ---Appends to `out` (from index n + 1) every record in the cells touched by the
 ---rectangle, once each, and returns the new count. Records come cell by cell in row
 ---order, and in insertion order inside a cell; callers sort what they return.
@@ -190,16 +205,8 @@ function Hash:collect(x, y, width, height, out, n)
   local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
   local stamp = self:next_stamp()
   local all = self._all
-  if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > #all then -- fewer records than cells: walk them
-    for i = 1, #all do
-      local record = all[i]
-      if record._cx0 <= cx1 and cx0 <= record._cx1 and record._cy0 <= cy1
-        and cy0 <= record._cy1 then
-        n = n + 1
-        out[n] = record
-      end
-    end
-    return n
+  if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > self._n then -- fewer records than cells: walk them
+    return list_touching(all, self._n, cx0, cy0, cx1, cy1, out, n)
   end
   local cells = self._cells
   for cy = cy0, cy1 do
@@ -218,15 +225,7 @@ function Hash:collect(x, y, width, height, out, n)
     end
   end
   local big = self._big
-  for i = 1, #big do
-    local record = big[i]
-    if record._cx0 <= cx1 and cx0 <= record._cx1 and record._cy0 <= cy1
-      and cy0 <= record._cy1 then
-      n = n + 1
-      out[n] = record
-    end
-  end
-  return n
+  return list_touching(big, #big, cx0, cy0, cx1, cy1, out, n)
 end
 
 -- One record that spans the probe's path across: where it stops the probe, if it does,
@@ -293,7 +292,7 @@ function Hash:axis_stop(x, y, width, height, probe)
   local cells = self._cells
   local columns = cx1 - cx0 + 1
   local count = columns * (cy1 - cy0 + 1)
-  if count > #self._all then -- fewer records than cells: scan them all (bounded work)
+  if count > self._n then -- fewer records than cells: scan them all (bounded work)
     scan_cell(self._all, stamp, probe)
     return
   end
@@ -308,7 +307,7 @@ function Hash:axis_stop(x, y, width, height, probe)
     if cell then scan_cell(cell, stamp, probe) end
   end
   local big = self._big
-  if #big > 0 then scan_cell(big, stamp, probe) end
+  if big[1] then scan_cell(big, stamp, probe) end
 end
 
 return hash
