@@ -38,6 +38,7 @@ build = {
     ["budge.move"] = "src/budge/move.lua",
     ["budge.carry"] = "src/budge/carry.lua",
     ["budge.query"] = "src/budge/query.lua",
+    ["budge.entry"] = "src/budge/entry.lua",
     ["budge.world"] = "src/budge/world.lua",
     ["budge.tiles"] = "src/budge/tiles.lua",
     ["budge.advise"] = "src/budge/advise.lua",

@@ -19,11 +19,12 @@ local sweep = require(here .. ".sweep")
 local solids = require(here .. ".solids")
 local actors = require(here .. ".actors")
 local move = require(here .. ".move")
+local entry = require(here .. ".entry")
 
 local before = sweep.before
 local axis_phase = move.axis_phase
 local near_actors = actors.near
-local type = type
+local type, pcall, error = type, pcall, error
 
 local carry = {}
 
@@ -66,7 +67,9 @@ local function crush(world, record)
   world._n_crushed = n
 end
 
--- One axis of a solid's move: push what is in its sweep, carry its riders.
+-- One axis of a solid's move: push what is in its sweep, carry its riders. Leaves in
+-- world._near the actors near the band it swept (which holds the solid's new box) and
+-- returns their count.
 local function solid_phase(world, solid, oneway, is_x, delta, ride_stamp)
   local x, y, width, height = solid.x, solid.y, solid.width, solid.height
   local reach = delta < 0 and -delta or delta
@@ -81,12 +84,15 @@ local function solid_phase(world, solid, oneway, is_x, delta, ride_stamp)
   end
   for k = 1, count do
     local record = near[k]
-    if world._records[solid] == nil then return end -- a filter removed the solid itself
+    if world._n_pending > 0 and world._records[solid] == nil then
+      return count -- a filter removed the solid
+    end
     local actor = record.item
     local filter = actor.filter
     -- skipped: an actor a filter removed earlier in this move, and one whose own filter
     -- lets it pass through this solid (it is neither pushed nor carried by it)
-    if not record.removed and (type(filter) ~= "function" or filter(actor, solid)) then
+    if not record.removed and (filter == nil or type(filter) ~= "function"
+      or filter(actor, solid)) then
       local ax, ay, aw, ah = actor.x, actor.y, actor.width, actor.height
       local target
       if is_x then
@@ -122,6 +128,7 @@ local function solid_phase(world, solid, oneway, is_x, delta, ride_stamp)
       end
     end
   end
+  return count
 end
 
 -- LuaJIT shaping: the loop over the actors near a moving solid is left to the
@@ -154,8 +161,11 @@ function carry.move_solid(world, record, dx, dy)
   end
   solids.unhash(world, record) -- out of every actor's way while it moves
   local oneway = record.oneway
-  if dx ~= 0 then solid_phase(world, solid, oneway, true, dx, stamp) end
-  if dy ~= 0 and not record.removed then solid_phase(world, solid, oneway, false, dy, stamp) end
+  local count -- of world._near, the actors near the last band swept
+  if dx ~= 0 then count = solid_phase(world, solid, oneway, true, dx, stamp) end
+  if dy ~= 0 and not record.removed then
+    count = solid_phase(world, solid, oneway, false, dy, stamp)
+  end
   world._n_hits = 0
   -- whatever is left inside the solid (it was inside already, or behind a face the
   -- solid never pushes with) is reported crushed: no actor ends inside it unreported.
@@ -163,13 +173,14 @@ function carry.move_solid(world, record, dx, dy)
   -- record at the start, which carry.abandon counts from.)
   if not oneway and not record.removed then
     local x, y, width, height = solid.x, solid.y, solid.width, solid.height
-    for k = 1, near_actors(world, x, y, width, height) do
+    -- (the last phase's near actors hold every actor that can overlap the new box)
+    for k = 1, count or near_actors(world, x, y, width, height) do
       local near_record = near[k]
       local actor = near_record.item
       local filter = actor.filter
       if not near_record.removed and actor.x < x + width and x < actor.x + actor.width
         and actor.y < y + height and y < actor.y + actor.height
-        and (type(filter) ~= "function" or filter(actor, solid)) then
+        and (filter == nil or type(filter) ~= "function" or filter(actor, solid)) then
         crush(world, near_record)
       end
     end
@@ -195,6 +206,44 @@ function carry.abandon(world, record, dx, dy)
   local probe = world._probe
   probe.actor, probe.filter = nil, nil
   world._n_crushed, world._n_hits = 0, 0
+end
+
+---world:move_solid once its arguments are checked: the move under the callback guard
+---(entry.guarded, with carry.abandon as what an error leaves), then each victim's
+---on_crush. on_crush runs once the move is complete: it may call into the world,
+---move_solid too (a nested call fills a crushed list of its own, one per depth); every
+---call is made, and the first error any of them raised propagates after the last.
+---@param world budge.World
+---@param record budge.Record the solid's record
+---@param dx number
+---@param dy number
+---@return integer n, budge.Box[] crushed owned by the world, valid until the next call at this depth
+function carry.run(world, record, dx, dy)
+  local depth = world._crush_depth + 1
+  local crushed = world._crush_lists[depth]
+  if crushed == nil then
+    crushed = {}
+    world._crush_lists[depth] = crushed
+  end
+  world._crushed, world._n_crushed = crushed, 0
+  entry.guarded(world, "an actor's filter (during world:move_solid)", carry.move_solid,
+    carry.abandon, record, dx, dy)
+  local n = world._n_crushed
+  for i = n + 1, #crushed do crushed[i] = nil end
+  world._crush_depth = depth
+  local solid, failure = record.item, nil
+  for i = 1, n do
+    local victim = crushed[i]
+    local on_crush = victim.on_crush
+    -- (a victim an earlier on_crush removed from the world is not called)
+    if type(on_crush) == "function" and world._records[victim] then
+      local ok, err = pcall(on_crush, victim, solid)
+      if not ok and failure == nil then failure = {err} end
+    end
+  end
+  world._crush_depth = depth - 1
+  if failure then error(failure[1], 0) end
+  return n, crushed
 end
 
 return carry

@@ -21,6 +21,7 @@ local hits = require(here .. ".hits")
 local move = require(here .. ".move")
 local carry = require(here .. ".carry")
 local query = require(here .. ".query")
+local entry = require(here .. ".entry")
 
 local check_box, check_wall_type, check_number = box.check_box, box.check_wall_type,
   box.check_number
@@ -28,7 +29,11 @@ local describe, is_finite = box.describe, box.is_finite
 local METHOD, NAME_LIST = move.BY_NAME, move.NAME_LIST
 local format, error, type = string.format, error, type
 
-local SOLID, ACTOR, TILES = "solid", "actor", "tiles"
+local SOLID, ACTOR, TILES = entry.SOLID, entry.ACTOR, entry.TILES
+local enter, guarded, check_span, check_out = entry.enter, entry.guarded, entry.check_span,
+  entry.check_out
+local find_record, refuse_duplicate, abandon_move = entry.find_record, entry.refuse_duplicate,
+  entry.abandon_move
 
 -- The range within which every operation is exact, terminates and does bounded work:
 -- coordinates (x, y, x + width, y + height) within 2^24 cells of the origin either way,
@@ -140,89 +145,6 @@ local function new_record(self, item, kind)
   local record = {item = item, kind = kind, id = id, oneway = false, _stamp = 0}
   self._records[item] = record
   return record
-end
-
-local function refuse_duplicate(self, item, name)
-  local record = self._records[item]
-  if record then
-    error(format("%s is already in this world (as %s)", name,
-      record.kind == ACTOR and "an actor" or (record.kind == SOLID and "a solid" or "tiles")), 3)
-  end
-end
-
-local function find_record(self, item, level)
-  local record = self._records[item]
-  if record == nil then
-    error(format("item is not in this world (add it with add_solid, add_actor or add_tiles "
-      .. "first), got %s", describe(item)), level + 1)
-  end
-  return record
-end
-
--- Every public method but move starts here: a world called with "." instead of ":", or
--- from inside one of its own callbacks (other than to remove items), is refused.
-local function enter(self, call)
-  if getmetatable(self) ~= World then
-    error(format("call it as world:%s(...), with a colon, got %s for the world", call,
-      describe(self)), 3)
-  end
-  if self._busy then
-    error(format("world:%s was called from inside %s: a callback may remove items from its "
-      .. "own world (world:remove) or use another world, but make no other call into its own",
-      call, self._busy), 3)
-  end
-end
-
--- Takes out what was removed while a callback ran (world:remove only marked it).
-local function flush(self)
-  local pending = self._pending
-  for i = 1, self._n_pending do
-    local record = pending[i]
-    pending[i] = nil
-    local kind = record.kind
-    if kind == SOLID then solids.unhash(self, record)
-    elseif kind == ACTOR then actors.remove(self, record)
-    else solids.remove_layer(self, record.item) end
-  end
-  self._n_pending, self._pending_actors, self._pending_layers = 0, 0, 0
-end
-
--- Runs `body(self, ...)` as the callback `busy` may interrupt: world:remove only marks
--- items while it runs, and an error it raises leaves the world as `recover(self, ...)`
--- puts it and then propagates unchanged.
-local function guarded(self, busy, body, recover, a, b, c, d, e)
-  self._busy = busy
-  local ok, err = pcall(body, self, a, b, c, d, e)
-  self._busy = false
-  if not ok then recover(self, a, b, c, d, e) end
-  flush(self)
-  if not ok then error(err, 0) end
-end
-
--- Errors (at the caller of the entry that calls it) when the span [low, low + size] on
--- one axis leaves the world's range.
-local function check_span(self, low, size, name, what)
-  local range = self.range
-  if low < -range or low + size > range then
-    error(format("%s must keep %s within this world's range, -%s to %s (2^24 cells of %s "
-      .. "px, at most 2^40 px), got %s", name, what, describe(range), describe(range),
-      describe(self.cell_size), describe(low)), 3)
-  end
-end
-
-local function check_out(out, name)
-  if out ~= nil and type(out) ~= "table" then
-    error(format("%s must be a table or nil, got %s", name, describe(out)), 3)
-  end
-  return out or {}
-end
-
--- What an error raised by a filter during world:move leaves: the actor where it was,
--- the hits of that move gone.
-local function abandon_move(self)
-  local probe = self._probe
-  probe.actor, probe.filter = nil, nil
-  self._n_hits = 0
 end
 
 ---Adds a solid box: actors stop against it. `wall_type = "oneway"` makes it block
@@ -389,8 +311,8 @@ function World:move(actor, dx, dy, method)
     check_span(self, to_x, actor.width, "dx", "the actor")
     check_span(self, to_y, actor.height, "dy", "the actor")
   end
-  local entry = METHOD[method == nil and "axis_sweep" or method]
-  if entry == nil then
+  local method_entry = METHOD[method == nil and "axis_sweep" or method]
+  if method_entry == nil then
     error(format("method must be %s, got %s", NAME_LIST, describe(method)), 2)
   end
   local filter = actor.filter
@@ -399,9 +321,10 @@ function World:move(actor, dx, dy, method)
   end
   self._n_hits = 0
   if filter == nil then -- no callback can run: nothing to guard
-    entry.move(self, actor, dx, dy, nil, entry)
+    method_entry.move(self, actor, dx, dy, nil, method_entry)
   else
-    guarded(self, "an actor's filter", entry.move, abandon_move, actor, dx, dy, filter, entry)
+    guarded(self, "an actor's filter", method_entry.move, abandon_move, actor, dx, dy, filter,
+      method_entry)
   end
   record.x, record.y, record.width, record.height = actor.x, actor.y, actor.width,
     actor.height
@@ -434,34 +357,7 @@ function World:move_solid(solid, dx, dy)
   check_number(dy, "dy", 2)
   check_span(self, solid.x + dx, solid.width, "dx", "the solid")
   check_span(self, solid.y + dy, solid.height, "dy", "the solid")
-  local depth = self._crush_depth + 1
-  local crushed = self._crush_lists[depth]
-  if crushed == nil then
-    crushed = {}
-    self._crush_lists[depth] = crushed
-  end
-  self._crushed, self._n_crushed = crushed, 0
-  guarded(self, "an actor's filter (during world:move_solid)", carry.move_solid,
-    carry.abandon, record, dx, dy)
-  local n = self._n_crushed
-  for i = n + 1, #crushed do crushed[i] = nil end
-  -- on_crush runs once the move is complete: it may call into the world, move_solid too
-  -- (a nested call fills a list of its own); every call is made, and the first error
-  -- any of them raised propagates after the last
-  self._crush_depth = depth
-  local failure
-  for i = 1, n do
-    local victim = crushed[i]
-    local on_crush = victim.on_crush
-    -- (a victim an earlier on_crush removed from the world is not called)
-    if type(on_crush) == "function" and self._records[victim] then
-      local ok, err = pcall(on_crush, victim, solid)
-      if not ok and failure == nil then failure = {err} end
-    end
-  end
-  self._crush_depth = depth - 1
-  if failure then error(failure[1], 0) end
-  return n, crushed
+  return carry.run(self, record, dx, dy)
 end
 
 ---Every solid, actor and tile layer (once, when any of its solid tiles does) that

@@ -1,0 +1,135 @@
+-- budge.entry: what the world's public methods do before they delegate. They refuse a
+-- world called with "." instead of ":" or from inside one of its own callbacks, check
+-- that boxes, moves and queries stay within the world's range, find the records of
+-- items; and they run what may call a game's callbacks under a guard, so that an error
+-- a callback raises leaves the world consistent (README.md, "Callbacks").
+
+local here = (...):match("^(.*)%.[^%.]+$")
+local box = require(here .. ".box")
+local solids = require(here .. ".solids")
+local actors = require(here .. ".actors")
+
+local describe = box.describe
+local format, error, type, pcall = string.format, error, type, pcall
+
+local entry = {}
+
+local SOLID, ACTOR, TILES = "solid", "actor", "tiles"
+entry.SOLID, entry.ACTOR, entry.TILES = SOLID, ACTOR, TILES
+
+---Errors (at the caller of the entry) when `item` is in the world already.
+---@param self budge.World
+---@param item any
+---@param name string the argument's name
+function entry.refuse_duplicate(self, item, name)
+  local record = self._records[item]
+  if record then
+    error(format("%s is already in this world (as %s)", name,
+      record.kind == ACTOR and "an actor" or (record.kind == SOLID and "a solid" or "tiles")), 3)
+  end
+end
+
+---The record of an item of the world; errors at `level` when it is not one.
+---@param self budge.World
+---@param item any
+---@param level integer
+---@return budge.Record
+function entry.find_record(self, item, level)
+  local record = self._records[item]
+  if record == nil then
+    error(format("item is not in this world (add it with add_solid, add_actor or add_tiles "
+      .. "first), got %s", describe(item)), level + 1)
+  end
+  return record
+end
+
+---Every public method but move (which tests one field first) starts here: a world
+---called with "." instead of ":", or from inside one of its own callbacks (other than to
+---remove items), is refused with an error at the caller of the entry.
+---@param self any what the method was called on
+---@param call string the method's name
+function entry.enter(self, call)
+  if type(self) ~= "table" or self._busy == nil then -- (every world has _busy, false or a name)
+    error(format("call it as world:%s(...), with a colon, got %s for the world", call,
+      describe(self)), 3)
+  end
+  if self._busy then
+    error(format("world:%s was called from inside %s: a callback may remove items from its "
+      .. "own world (world:remove) or use another world, but make no other call into its own",
+      call, self._busy), 3)
+  end
+end
+
+---Takes out what was removed while a callback ran (world:remove only marked it).
+---@param self budge.World
+function entry.flush(self)
+  local pending = self._pending
+  for i = 1, self._n_pending do
+    local record = pending[i]
+    pending[i] = nil
+    local kind = record.kind
+    if kind == SOLID then solids.unhash(self, record)
+    elseif kind == ACTOR then actors.remove(self, record)
+    else solids.remove_layer(self, record.item) end
+  end
+  self._n_pending, self._pending_actors, self._pending_layers = 0, 0, 0
+end
+
+---Runs `body(self, a, ..., e)` while `busy` names the callback it may call: world:remove
+---only marks items meanwhile, and an error raised inside leaves the world as
+---`recover(self, a, ..., e)` puts it, the removals done, and then propagates unchanged.
+---@param self budge.World
+---@param busy string
+---@param body function
+---@param recover function
+---@param a any
+---@param b any
+---@param c any
+---@param d any
+---@param e any
+function entry.guarded(self, busy, body, recover, a, b, c, d, e)
+  self._busy = busy
+  local ok, err = pcall(body, self, a, b, c, d, e)
+  self._busy = false
+  if not ok then recover(self, a, b, c, d, e) end
+  entry.flush(self)
+  if not ok then error(err, 0) end
+end
+
+---Errors (at the caller of the entry) when the span [low, low + size] on one axis leaves
+---the world's range.
+---@param self budge.World
+---@param low number
+---@param size number
+---@param name string the argument's name
+---@param what string what must stay in range ("the box")
+function entry.check_span(self, low, size, name, what)
+  local range = self.range
+  if low < -range or low + size > range then
+    error(format("%s must keep %s within this world's range, -%s to %s (2^24 cells of %s "
+      .. "px, at most 2^40 px), got %s", name, what, describe(range), describe(range),
+      describe(self.cell_size), describe(low)), 3)
+  end
+end
+
+---A caller's output table, or a new one; errors (at the caller of the entry) for others.
+---@param out any
+---@param name string
+---@return table
+function entry.check_out(out, name)
+  if out ~= nil and type(out) ~= "table" then
+    error(format("%s must be a table or nil, got %s", name, describe(out)), 3)
+  end
+  return out or {}
+end
+
+---What an error raised by a filter during world:move leaves: the actor where it was,
+---the hits of that move gone.
+---@param self budge.World
+function entry.abandon_move(self)
+  local probe = self._probe
+  probe.actor, probe.filter = nil, nil
+  self._n_hits = 0
+end
+
+return entry
