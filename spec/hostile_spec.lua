@@ -136,6 +136,21 @@ describe("axis_sweep on tile layers at origins not exact in binary", function()
   end)
 end)
 
+describe("an actor that exactly fits between a ceiling and a floor", function()
+  it("never steps back an ulp into the ceiling when the floor stops it (found by the soak)", function()
+    for _, method in ipairs({"axis_sweep", "swept"}) do
+      local world = budge.new_world()
+      world:add_tiles({{1, 1, 1}, {0, 0, 0}, {1, 1, 1}}, 16, 16, {x = 0.3, y = 40.1})
+      local y = 40.1 + 16 -- the ceiling's bottom, as the layer computes it
+      local actor = world:add_actor(box(1.425, y, 17, 16)) -- its bottom on the floor's top
+      world:move(actor, 12.625, 4.375, method)
+      assert.same({1.425 + 12.625, y}, {actor.x, actor.y}, method)
+      assert.same(0, select(2, world:query_rect(actor.x, actor.y, actor.width, actor.height)) - 1,
+        method) -- (finds only the actor: it overlaps no tile)
+    end
+  end)
+end)
+
 describe("zero-size actors", function()
   it("stop on faces like any actor, with axis_sweep, auto and swept", function()
     for _, method in ipairs({"axis_sweep", "auto", "swept"}) do

@@ -100,7 +100,7 @@ local function axis_phase(world, actor, filter, is_x, pos, cross, size, cross_si
       local face, count = tile_face(tiles, probe)
       local stop = face
       if face then
-        if forward then stop = face >= pos + size and before(face, size) or pos
+        if forward then stop = face >= pos + size and before(face, size, pos) or pos
         elseif face > pos then stop = pos end
       end -- the same outcomes as sweep.stop_forward / stop_backward give
       if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
@@ -197,12 +197,13 @@ local function advance(world, x, y, dx, dy, round)
         if kind == NORMAL_X then
           world._round = round
           if not outside then new_x = from_x
-          elseif step_x > 0 then new_x = before(xs[i], width) else new_x = xs[i] + ws[i] end
+          elseif step_x > 0 then new_x = before(xs[i], width, from_x) else new_x = xs[i] + ws[i] end
           add_hit(world, other[i], step_x > 0 and "right" or "left", cols[i], rows[i], ys[i], xs[i], ids[i])
         elseif kind == NORMAL_Y or corners_block then
           world._round = round + 1
           if not outside then new_y = from_y
-          elseif step_y > 0 then new_y = before(ys[i], height) else new_y = ys[i] + hs[i] end
+          elseif step_y > 0 then new_y = before(ys[i], height, from_y)
+          else new_y = ys[i] + hs[i] end
           add_hit(world, other[i], step_y > 0 and "floor" or "ceiling", cols[i], rows[i], ys[i], xs[i], ids[i])
         end
       end

@@ -110,16 +110,21 @@ end
 
 ---The largest position p with p + size <= face: where a box of `size` stops with its
 ---leading edge on `face`. Equal to face - size whenever that is exact (integers, and
----halves, quarters... of them); otherwise a few ulps less, never an overlap.
+---halves, quarters... of them); otherwise a few ulps less, never an overlap. `low`, when
+---given, is where the box is now: if it already fits (low + size <= face) and lies
+---beyond face - size by a rounding, the box stays there instead of stepping back an ulp
+---(into whatever touches its trailing edge).
 ---@param face number
 ---@param size number
+---@param low? number
 ---@return number
-function sweep.before(face, size)
+function sweep.before(face, size, low)
   local position = face - size
   if position + size > face then
     local step = ((face < 0 and -face or face) + size) * 2 ^ -52
     repeat position = position - step until position + size <= face
   end
+  if low ~= nil and low > position and low + size <= face then return low end
   return position
 end
 
@@ -169,7 +174,7 @@ function sweep.stop_forward(near, pos, edge, reach, size, oneway, blocks_oneway)
   -- ahead of the leading edge first: for a box of size 0 (pos == edge) a face touching it
   -- is ahead, not behind
   if near >= edge then
-    if blocks_oneway or not oneway then return sweep.before(near, size) end
+    if blocks_oneway or not oneway then return sweep.before(near, size, pos) end
     return nil
   end
   if near <= pos or oneway then return nil end
