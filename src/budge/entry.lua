@@ -49,15 +49,33 @@ end
 ---@param self any what the method was called on
 ---@param call string the method's name
 function entry.enter(self, call)
-  if type(self) ~= "table" or self._busy == nil then -- (every world has _busy, false or a name)
-    error(format("call it as world:%s(...), with a colon, got %s for the world", call,
-      describe(self)), 3)
-  end
+  entry.check_self(self, call, 4)
   if self._busy then
     error(format("world:%s was called from inside %s: a callback may remove items from its "
       .. "own world (world:remove) or use another world, but make no other call into its own",
       call, self._busy), 3)
   end
+end
+
+---Errors at `level` when a method was called with "." instead of ":" (`self` is then not
+---a world). The methods a callback may call (remove, has, count) check only this.
+---@param self any
+---@param call string the method's name
+---@param level integer
+function entry.check_self(self, call, level)
+  if type(self) ~= "table" or self._busy == nil then -- (every world has _busy, false or a name)
+    error(format("call it as world:%s(...), with a colon, got %s for the world", call,
+      describe(self)), level)
+  end
+end
+
+---Errors (at the caller of the entry) when the box leaves the world's range on either axis.
+---@param self budge.World
+---@param b budge.Box checked already
+---@param name string the argument's name ("box")
+function entry.check_box_span(self, b, name)
+  entry.check_span(self, b.x, b.width, name .. ".x", "the box", 4)
+  entry.check_span(self, b.y, b.height, name .. ".y", "the box", 4)
 end
 
 ---Takes out what was removed while a callback ran (world:remove only marked it).
@@ -103,12 +121,13 @@ end
 ---@param size number
 ---@param name string the argument's name
 ---@param what string what must stay in range ("the box")
-function entry.check_span(self, low, size, name, what)
+---@param level? integer where the error points (default 3: the caller of the entry)
+function entry.check_span(self, low, size, name, what, level)
   local range = self.range
   if low < -range or low + size > range then
     error(format("%s must keep %s within this world's range, -%s to %s (2^24 cells of %s "
       .. "px, at most 2^40 px), got %s", name, what, describe(range), describe(range),
-      describe(self.cell_size), describe(low)), 3)
+      describe(self.cell_size), describe(low)), level or 3)
   end
 end
 

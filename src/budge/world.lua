@@ -34,6 +34,7 @@ local enter, guarded, check_span, check_out = entry.enter, entry.guarded, entry.
   entry.check_out
 local find_record, refuse_duplicate, abandon_move = entry.find_record, entry.refuse_duplicate,
   entry.abandon_move
+local check_self, check_box_span = entry.check_self, entry.check_box_span
 
 -- The range within which every operation is exact, terminates and does bounded work:
 -- coordinates (x, y, x + width, y + height) within 2^24 cells of the origin either way,
@@ -156,8 +157,7 @@ function World:add_solid(solid)
   refuse_duplicate(self, solid, "box")
   check_box(solid, "box", 2)
   check_wall_type(solid, "box", 2)
-  check_span(self, solid.x, solid.width, "box.x", "the box")
-  check_span(self, solid.y, solid.height, "box.y", "the box")
+  check_box_span(self, solid, "box")
   solids.hash(self, new_record(self, solid, SOLID))
   self._solid_count = self._solid_count + 1
   return solid
@@ -171,8 +171,7 @@ function World:add_actor(actor)
   enter(self, "add_actor")
   refuse_duplicate(self, actor, "box")
   check_box(actor, "box", 2)
-  check_span(self, actor.x, actor.width, "box.x", "the box")
-  check_span(self, actor.y, actor.height, "box.y", "the box")
+  check_box_span(self, actor, "box")
   actors.insert(self, new_record(self, actor, ACTOR))
   return actor
 end
@@ -206,10 +205,7 @@ end
 ---world's own callbacks: an item removed there is not met again by the move running.
 ---@param item table
 function World:remove(item)
-  if getmetatable(self) ~= World then
-    error(format("call it as world:remove(...), with a colon, got %s for the world",
-      describe(self)), 2)
-  end
+  check_self(self, "remove", 3)
   local record = find_record(self, item, 2)
   self._records[item] = nil
   record.removed = true
@@ -242,14 +238,12 @@ function World:update(item)
   if kind == SOLID then
     check_box(item, "box", 2)
     check_wall_type(item, "box", 2)
-    check_span(self, item.x, item.width, "box.x", "the box")
-    check_span(self, item.y, item.height, "box.y", "the box")
+    check_box_span(self, item, "box")
     solids.unhash(self, record)
     solids.hash(self, record)
   elseif kind == ACTOR then
     check_box(item, "box", 2)
-    check_span(self, item.x, item.width, "box.x", "the box")
-    check_span(self, item.y, item.height, "box.y", "the box")
+    check_box_span(self, item, "box")
     actors.rehash_one(self, record)
   else
     check_number(item.x, "layer.x", 2)
@@ -265,20 +259,14 @@ end
 ---@param item any
 ---@return boolean
 function World:has(item)
-  if getmetatable(self) ~= World then
-    error(format("call it as world:has(...), with a colon, got %s for the world",
-      describe(self)), 2)
-  end
+  check_self(self, "has", 3)
   return self._records[item] ~= nil
 end
 
 ---Counts of the world's items: solids, actors, tile layers.
 ---@return integer solids, integer actors, integer layers
 function World:count()
-  if getmetatable(self) ~= World then
-    error(format("call it as world:count(...), with a colon, got %s for the world",
-      describe(self)), 2)
-  end
+  check_self(self, "count", 3)
   return self._solid_count, #self._actor_list - self._pending_actors,
     #self._layers - self._pending_layers
 end
