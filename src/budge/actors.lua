@@ -4,19 +4,29 @@
 -- rehashes the noted actors, so a frame of moves pays nothing for the hash. Each record
 -- keeps a copy of its actor's box as the world last checked it (at add, update and each
 -- move): queries read the copy, so a field the game overwrote since is never read.
+-- Sensors are kept the same way, in a list and a hash of their own (they move only
+-- through world:update). Each record also keeps where its box was when the frame began
+-- (the last world:contacts, its add or its update), for frame contacts.
 
 local actors = {}
 
----Adds an actor's record to the list and the hash.
+-- The list and hash an actor's or a sensor's record lives in.
+local function home(world, record)
+  if record.kind == "sensor" then return world._sensor_list, world._sensors end
+  return world._actor_list, world._actors
+end
+
+---Adds an actor's (or a sensor's) record to its list and hash; its frame begins here.
 ---@param world budge.World
 ---@param record budge.Record
 function actors.insert(world, record)
-  local list = world._actor_list
+  local list, hash = home(world, record)
   local index = #list + 1
   list[index] = record
   record.index = index
   actors.copy(record)
-  world._actors:insert(record, record.x, record.y, record.width, record.height)
+  record._fx, record._fy = record.x, record.y
+  hash:insert(record, record.x, record.y, record.width, record.height)
 end
 
 ---Copies the actor's box into its record (after the box was checked).
@@ -26,12 +36,12 @@ function actors.copy(record)
   record.x, record.y, record.width, record.height = item.x, item.y, item.width, item.height
 end
 
----Takes an actor's record out of the list and the hash.
+---Takes an actor's (or a sensor's) record out of its list and hash.
 ---@param world budge.World
 ---@param record budge.Record
 function actors.remove(world, record)
-  world._actors:remove(record)
-  local list = world._actor_list
+  local list, hash = home(world, record)
+  hash:remove(record)
   local last = list[#list]
   list[record.index] = last
   last.index = record.index
@@ -51,12 +61,13 @@ function actors.moved(world, record)
   end
 end
 
----Re-registers an actor's record in the cells of its box now.
+---Re-registers an actor's (or a sensor's) record in the cells of its box now.
 ---@param world budge.World
 ---@param record budge.Record
 function actors.rehash_one(world, record)
   actors.copy(record)
-  world._actors:moved(record, record.x, record.y, record.width, record.height)
+  local _, hash = home(world, record)
+  hash:moved(record, record.x, record.y, record.width, record.height)
 end
 
 ---Brings the cells of the actors moved since the last call up to date.

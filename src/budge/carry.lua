@@ -18,11 +18,13 @@ local here = (...):match("^(.*)%.[^%.]+$")
 local sweep = require(here .. ".sweep")
 local solids = require(here .. ".solids")
 local actors = require(here .. ".actors")
+local hits = require(here .. ".hits")
 local move = require(here .. ".move")
 local entry = require(here .. ".entry")
 
 local before = sweep.before
-local axis_phase = move.axis_phase
+local push_phase = move.push_phase
+local response_of, CROSS = hits.response, hits.CROSS
 local near_actors = actors.near
 local type, pcall, error = type, pcall, error
 
@@ -45,18 +47,29 @@ local function shove(world, record, is_x, target)
     return false -- pushed out of the world's range: crushed instead, left where it is
   end
   if target ~= pos then
+    local blocked
     if is_x then
-      pos = axis_phase(world, actor, filter, true, x, y, actor.width, actor.height, target - pos)
+      pos, blocked = push_phase(world, filter, true, x, y, actor.width, actor.height,
+        target - pos)
     else
-      pos = axis_phase(world, actor, filter, false, y, x, actor.height, actor.width, target - pos)
+      pos, blocked = push_phase(world, filter, false, y, x, actor.height, actor.width,
+        target - pos)
     end
-    if world._n_hits == 0 then pos = target end
+    if not blocked then pos = target end
     if is_x then x = pos else y = pos end
   end
   probe.actor, probe.filter = nil, nil
   actor.x, actor.y = x, y
   actors.rehash_one(world, record)
   return pos == target
+end
+
+-- Whether a moving solid acts on the actor: not when the actor's filter ignores or
+-- crosses it.
+local function blocks(actor, filter, solid)
+  if filter == nil or type(filter) ~= "function" then return true end
+  local response = response_of(filter(actor, solid), solid)
+  return response ~= nil and response ~= CROSS
 end
 
 local function crush(world, record)
@@ -91,8 +104,7 @@ local function solid_phase(world, solid, oneway, is_x, delta, ride_stamp)
     local filter = actor.filter
     -- skipped: an actor a filter removed earlier in this move, and one whose own filter
     -- lets it pass through this solid (it is neither pushed nor carried by it)
-    if not record.removed and (filter == nil or type(filter) ~= "function"
-      or filter(actor, solid)) then
+    if not record.removed and blocks(actor, filter, solid) then
       local ax, ay, aw, ah = actor.x, actor.y, actor.width, actor.height
       local target
       if is_x then
@@ -180,7 +192,7 @@ function carry.move_solid(world, record, dx, dy)
       local filter = actor.filter
       if not near_record.removed and actor.x < x + width and x < actor.x + actor.width
         and actor.y < y + height and y < actor.y + actor.height
-        and (filter == nil or type(filter) ~= "function" or filter(actor, solid)) then
+        and blocks(actor, filter, solid) then
         crush(world, near_record)
       end
     end
@@ -226,7 +238,7 @@ function carry.run(world, record, dx, dy)
     world._crush_lists[depth] = crushed
   end
   world._crushed, world._n_crushed = crushed, 0
-  entry.guarded(world, "an actor's filter (during world:move_solid)", carry.move_solid,
+  entry.guarded(world, "an actor's filter (during world:move_solid)", 3, carry.move_solid,
     carry.abandon, record, dx, dy)
   local n = world._n_crushed
   for i = n + 1, #crushed do crushed[i] = nil end

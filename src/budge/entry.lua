@@ -8,14 +8,21 @@ local here = (...):match("^(.*)%.[^%.]+$")
 local box = require(here .. ".box")
 local solids = require(here .. ".solids")
 local actors = require(here .. ".actors")
+local hits = require(here .. ".hits")
 
 local describe = box.describe
 local format, error, type, pcall = string.format, error, type, pcall
+local getmetatable = getmetatable
+local BadResponse = hits.BadResponse
 
 local entry = {}
 
-local SOLID, ACTOR, TILES = "solid", "actor", "tiles"
-entry.SOLID, entry.ACTOR, entry.TILES = SOLID, ACTOR, TILES
+local SOLID, ACTOR, TILES, SENSOR = "solid", "actor", "tiles", "sensor"
+entry.SOLID, entry.ACTOR, entry.TILES, entry.SENSOR = SOLID, ACTOR, TILES, SENSOR
+
+-- How an error names each kind of item.
+local A_KIND = {solid = "a solid", actor = "an actor", tiles = "tiles", sensor = "a sensor"}
+entry.A_KIND = A_KIND
 
 ---Errors (at the caller of the entry) when `item` is in the world already.
 ---@param self budge.World
@@ -24,8 +31,7 @@ entry.SOLID, entry.ACTOR, entry.TILES = SOLID, ACTOR, TILES
 function entry.refuse_duplicate(self, item, name)
   local record = self._records[item]
   if record then
-    error(format("%s is already in this world (as %s)", name,
-      record.kind == ACTOR and "an actor" or (record.kind == SOLID and "a solid" or "tiles")), 3)
+    error(format("%s is already in this world (as %s)", name, A_KIND[record.kind]), 3)
   end
 end
 
@@ -37,8 +43,8 @@ end
 function entry.find_record(self, item, level)
   local record = self._records[item]
   if record == nil then
-    error(format("item is not in this world (add it with add_solid, add_actor or add_tiles "
-      .. "first), got %s", describe(item)), level + 1)
+    error(format("item is not in this world (add it with add_solid, add_actor, add_sensor or "
+      .. "add_tiles first), got %s", describe(item)), level + 1)
   end
   return record
 end
@@ -87,17 +93,21 @@ function entry.flush(self)
     pending[i] = nil
     local kind = record.kind
     if kind == SOLID then solids.unhash(self, record)
-    elseif kind == ACTOR then actors.remove(self, record)
-    else solids.remove_layer(self, record.item) end
+    elseif kind == TILES then solids.remove_layer(self, record.item)
+    else actors.remove(self, record) end -- an actor or a sensor
   end
   self._n_pending, self._pending_actors, self._pending_layers = 0, 0, 0
+  self._pending_sensors = 0
 end
 
 ---Runs `body(self, a, ..., e)` while `busy` names the callback it may call: world:remove
 ---only marks items meanwhile, and an error raised inside leaves the world as
----`recover(self, a, ..., e)` puts it, the removals done, and then propagates unchanged.
+---`recover(self, a, ..., e)` puts it, the removals done, and then propagates: a game's
+---own error unchanged, a filter's bad return value (hits.response) as an error at
+---`level` (counted from the caller of guarded). Returns what body returned first.
 ---@param self budge.World
 ---@param busy string
+---@param level integer
 ---@param body function
 ---@param recover function
 ---@param a any
@@ -105,13 +115,18 @@ end
 ---@param c any
 ---@param d any
 ---@param e any
-function entry.guarded(self, busy, body, recover, a, b, c, d, e)
+---@return any
+function entry.guarded(self, busy, level, body, recover, a, b, c, d, e)
   self._busy = busy
-  local ok, err = pcall(body, self, a, b, c, d, e)
+  local ok, result = pcall(body, self, a, b, c, d, e)
   self._busy = false
   if not ok then recover(self, a, b, c, d, e) end
   entry.flush(self)
-  if not ok then error(err, 0) end
+  if not ok then
+    if getmetatable(result) == BadResponse then error(result.message, level + 1) end
+    error(result, 0)
+  end
+  return result
 end
 
 ---Errors (at the caller of the entry) when the span [low, low + size] on one axis leaves

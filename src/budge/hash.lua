@@ -27,7 +27,7 @@ local hash = {}
 ---What the hash reads and writes on a record. The world's solid records carry a copy of
 ---their box for the axis scan; actor records need only the cell and stamp fields.
 ---@class budge.HashRecord
----@field item any what the record stands for; passed to the probe's filter
+---@field item any what the record stands for
 ---@field x? number the box, copied in (read by Hash:axis_stop only)
 ---@field y? number
 ---@field width? number
@@ -248,8 +248,6 @@ local function consider(probe, record, low, length)
   if best ~= nil and (probe.forward and stop > best or not probe.forward and stop < best) then
     return
   end
-  local filter = probe.filter
-  if filter ~= nil and not filter(probe.actor, record.item) then return end
   local touched = probe.touched
   if stop ~= best then probe.best = stop; touched = 0 end
   touched = touched + 1
@@ -276,7 +274,8 @@ end
 ---Runs the probe over the records (each with its box's x, y, width, height copied in,
 ---and `item` what the filter is given) in the cells the rectangle touches: where the
 ---box stops, as sweep.stop_forward/backward decide, lands in probe.best, and the records
----that stop it there in probe.touch[1..probe.touched]. The probe's filter skips records.
+---that stop it there in probe.touch[1..probe.touched]. (No filter is asked: a move with
+---one gathers its candidates instead.)
 ---@param x number
 ---@param y number
 ---@param width number

@@ -1,36 +1,80 @@
--- budge.hits: the contact records of one move. The world owns an array of them, reused
--- from move to move (no garbage once warm); a move fills them from index 1 and sorts
--- them into the order they happened.
+-- budge.hits: the contact records of one move, and the responses a filter may choose.
+-- The world owns an array of records, reused from move to move (no garbage once warm);
+-- a move fills them from index 1 and sorts them into the order they happened.
+
+local box = require((...):match("^(.*)%.[^%.]+$") .. ".box")
+
+local describe = box.describe
+local format, error, setmetatable = string.format, error, setmetatable
 
 local hits = {}
 
----One contact of a move. Owned by the world and reused: valid until the next move.
+---One contact of a move. Owned by the world and reused: valid until the next move (a
+---check has records of its own).
 ---@class budge.Hit
----@field other table the solid box, or the tile layer handle
----@field side "floor"|"ceiling"|"left"|"right" which side of the actor touched
+---@field other table the solid, sensor or actor box, or the tile layer handle
+---@field side? "floor"|"ceiling"|"left"|"right" which side of the actor touched (nil: a
+---"cross" hit the actor was already inside at the start of the move, or of a phase of it)
 ---@field col? integer the tile's column, for a tile layer
 ---@field row? integer the tile's row, for a tile layer
----@field package _top number sort keys: the top and left of what was met,
+---@field response "slide"|"touch"|"bounce"|"cross" what the filter chose ("slide" with no filter; "cross" for a sensor)
+---@field t number the fraction of the move at which the contact happened (0: at its start)
+---@field nx integer the face's normal, from `other` toward the actor: -1, 0 or 1
+---@field ny integer
+---@field package _top number sort keys after t: the top and left of what was met,
 ---@field package _left number
 ---@field package _id integer the order its item was added,
 ---@field package _round integer and the phase of the move it happened in
 
----Appends a contact with `other` (a solid box, or a tile layer with the tile's col and
----row) to the world's hits, in the world's current round; `top` and `left` are the
----corner of what was met (the box's, or the tile's), its sort keys.
+-- The responses, and the one a filter's `true` stands for.
+local RESPONSE = {slide = "slide", touch = "touch", bounce = "bounce", cross = "cross"}
+RESPONSE[true] = "slide"
+hits.SLIDE, hits.TOUCH, hits.BOUNCE, hits.CROSS = "slide", "touch", "bounce", "cross"
+
+-- The normal of the face each side of the actor meets.
+local NX = {left = 1, right = -1, floor = 0, ceiling = 0}
+local NY = {left = 0, right = 0, floor = -1, ceiling = 1}
+
+-- An error a filter's return value caused: entry.guarded raises its message at the line
+-- that called the world (a game's own errors pass through unchanged).
+local BadResponse = {}
+BadResponse.__index = BadResponse
+hits.BadResponse = BadResponse
+
+---What a filter's return value means: "slide", "touch", "bounce" or "cross", or nil to
+---ignore (false and nil). Raises a BadResponse error for any other value.
+---@param value any what the filter returned
+---@param other any what it was asked about (named in the error)
+---@return "slide"|"touch"|"bounce"|"cross"|nil
+function hits.response(value, other)
+  if value == nil or value == false then return nil end
+  local response = RESPONSE[value]
+  if response == nil then
+    error(setmetatable({message = format("actor.filter must return \"slide\" (or true), "
+      .. "\"touch\", \"bounce\", \"cross\", or false/nil to ignore, got %s for %s",
+      describe(value), describe(other))}, BadResponse))
+  end
+  return response
+end
+
+---Appends a contact with `other` (a box, or a tile layer with the tile's col and row) to
+---the world's hits, in the world's current round; `top` and `left` are the corner of
+---what was met (the box's, or the tile's), its sort keys after `t`.
 ---LuaJIT shaping: the callers pass top and left, which they have at hand; computed here
 ---from `other`, the branch made make bench-jit's platformer compile 606 traces and
 ---790-813 KB instead of 535 and 621-627 (median of 6 runs with a budget that never runs
 ---out, 2026-12-01).
 ---@param world budge.World
 ---@param other table
----@param side "floor"|"ceiling"|"left"|"right"
+---@param side? "floor"|"ceiling"|"left"|"right"
 ---@param col? integer
 ---@param row? integer
 ---@param top number
 ---@param left number
 ---@param id integer
-function hits.add(world, other, side, col, row, top, left, id)
+---@param response "slide"|"touch"|"bounce"|"cross"
+---@param t number
+function hits.add(world, other, side, col, row, top, left, id, response, t)
   local n = world._n_hits + 1
   local hit = world._hits[n]
   if hit == nil then
@@ -38,18 +82,37 @@ function hits.add(world, other, side, col, row, top, left, id)
     world._hits[n] = hit
   end
   hit.other, hit.side, hit.col, hit.row = other, side, col, row
+  hit.response, hit.t, hit.nx, hit.ny = response, t, NX[side] or 0, NY[side] or 0
   hit._top, hit._left = top, left
   hit._id, hit._round = id, world._round
   world._n_hits = n
 end
 
--- Contacts of one move come out in the order they happened (x before y), and within one
--- round by position (top, then left) and then by the order items were added.
+-- Contacts of one move come out in the order they happened: by t; at the same t, by the
+-- phase of the move (x before y, a slide's rounds in turn), then by position (top, then
+-- left) and then by the order items were added.
 local function hit_before(a, b)
+  if a.t ~= b.t then return a.t < b.t end
   if a._round ~= b._round then return a._round < b._round end
   if a._top ~= b._top then return a._top < b._top end
   if a._left ~= b._left then return a._left < b._left end
   return a._id < b._id
+end
+
+---True when the world's hits from `first` on already hold the tile (col, row) of `tiles`.
+---@param world budge.World
+---@param first integer
+---@param tiles table
+---@param col integer
+---@param row integer
+---@return boolean
+function hits.has_tile(world, first, tiles, col, row)
+  local list = world._hits
+  for i = first, world._n_hits do
+    local hit = list[i]
+    if hit.other == tiles and hit.col == col and hit.row == row then return true end
+  end
+  return false
 end
 
 ---Sorts the world's hits 1.._n_hits into the order they happened.

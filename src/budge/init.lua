@@ -1,8 +1,8 @@
 -- budge: good-enough AABB collision for LÖVE and any Lua 5.1-5.4 / LuaJIT host.
 -- This file only re-exports; each function lives in the module named beside it.
 -- README.md in this folder lists the modules in the order they depend on each other:
--- box, resolve, fatcross, sweep, hash, tilegrid, layer, solids, actors, entry, hits,
--- move, carry, query, world, tiles, advise; each requires only modules before it.
+-- box, resolve, fatcross, sweep, hash, tilegrid, layer, hits, actors, solids, entry,
+-- move, carry, query, contacts, world, tiles, advise; each requires only modules before it.
 --
 -- MIT License. Copyright (c) 2026 the budge developers. See LICENSE in the
 -- distribution; the notice travels with this folder when it is copied into a game.

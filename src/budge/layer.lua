@@ -30,6 +30,7 @@ local EMPTY, SOLID, ONEWAY = tilegrid.EMPTY, tilegrid.SOLID, tilegrid.ONEWAY
 ---@field rows integer rows of tiles
 ---@field grid table the caller's grid, as given (reread by world:update)
 ---@field package _kinds integer[] EMPTY, SOLID or ONEWAY at (row - 1) * cols + col
+---@field package _ids any[] the grid's id of each non-empty tile, as read (filters get it)
 ---@field package _inverse_width number 1 / tile_width
 ---@field package _inverse_height number 1 / tile_height
 ---@field package _width? integer opts.width, for a flat grid
@@ -48,10 +49,10 @@ function layer.new(source, tile_width, tile_height, opts, level)
   local tiles = {
     x = opts.x or 0, y = opts.y or 0, tile_width = tile_width, tile_height = tile_height,
     cols = cols, rows = rows, grid = source,
-    _kinds = {}, _inverse_width = 1 / tile_width, _inverse_height = 1 / tile_height,
+    _kinds = {}, _ids = {}, _inverse_width = 1 / tile_width, _inverse_height = 1 / tile_height,
     _width = opts.width, _is_solid = opts.is_solid, _is_oneway = opts.is_oneway,
   }
-  read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds)
+  read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds, tiles._ids)
   return tiles
 end
 
@@ -66,7 +67,7 @@ function layer.reread(tiles, level)
     error(format("grid changed size from %dx%d to %dx%d: remove the layer and add it again",
       tiles.cols, tiles.rows, cols, rows), level + 1)
   end
-  read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds)
+  read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds, tiles._ids)
 end
 
 ---The tile indices (0-based) whose span meets the open interval (from, to), clamped to
@@ -150,22 +151,29 @@ function layer.touches(tiles, x, y, width, height, set)
 end
 
 
----Fraction of the segment at which it first enters a non-empty tile, or nil. Walks the
----part of the segment inside the layer in pieces no longer than a tile, nearest first,
----and stops at the first piece that holds the answer: the work follows the tiles along
----the segment, not the rectangle around it. `set` is scratch.
+---Fraction of the segment at which it first enters a non-empty tile, or nil; with a
+---size, the fraction at which a box of that size with its top-left corner on the segment
+---first overlaps one (strictly). Walks the part of the path inside the layer in pieces
+---no longer than a tile, nearest first, and stops at the first piece that holds the
+---answer: the work follows the tiles along the path, not the rectangle around it. `set`
+---is scratch.
 ---@param tiles budge.TileLayer
 ---@param x1 number
 ---@param y1 number
 ---@param dx number
 ---@param dy number
 ---@param set budge.CandidateSet emptied
+---@param width? number the box's size (default 0: a point)
+---@param height? number
 ---@return number?
-function layer.segment_first(tiles, x1, y1, dx, dy, set)
+function layer.segment_first(tiles, x1, y1, dx, dy, set, width, height)
+  width, height = width or 0, height or 0
   local lx, ly = tiles.x, tiles.y
-  local enter, leave = clip_axis(x1, dx, lx, lx + tiles.cols * tiles.tile_width, 0, 1, false)
+  local enter, leave = clip_axis(x1, dx, lx - width, lx + tiles.cols * tiles.tile_width, 0, 1,
+    false)
   if enter == nil then return nil end
-  enter, leave = clip_axis(y1, dy, ly, ly + tiles.rows * tiles.tile_height, enter, leave, false)
+  enter, leave = clip_axis(y1, dy, ly - height, ly + tiles.rows * tiles.tile_height, enter,
+    leave, false)
   if enter == nil or enter > leave then return nil end
   local adx, ady = dx < 0 and -dx or dx, dy < 0 and -dy or dy
   local tile = tiles.tile_width < tiles.tile_height and tiles.tile_width or tiles.tile_height
@@ -179,10 +187,11 @@ function layer.segment_first(tiles, x1, y1, dx, dy, set)
     local ax, ay, bx, by = x1 + dx * t0, y1 + dy * t0, x1 + dx * t1, y1 + dy * t1
     local left, top = ax < bx and ax or bx, ay < by and ay or by
     set.n = 0
-    layer.gather(tiles, left, top, (ax < bx and bx - ax or ax - bx),
-      (ay < by and by - ay or ay - by), set, 0)
+    layer.gather(tiles, left, top, (ax < bx and bx - ax or ax - bx) + width,
+      (ay < by and by - ay or ay - by) + height, set, 0)
     for i = 1, set.n do
-      local t = segment_enter(x1, y1, dx, dy, xs[i], ys[i], ws[i], hs[i])
+      local t = segment_enter(x1, y1, dx, dy, xs[i] - width, ys[i] - height, ws[i] + width,
+        hs[i] + height)
       if t and (best == nil or t < best) then best = t end
     end
     if best and best <= t1 then break end

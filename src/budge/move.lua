@@ -31,7 +31,12 @@ local NORMAL_X, NORMAL_Y = sweep.NORMAL_X, sweep.NORMAL_Y
 local tile_face = layer.tile_face
 local gather, clip_to_boxes, clip_to_bounds = solids.gather, solids.clip_to_boxes,
   solids.clip_to_bounds
-local add_hit = hits.add
+local gather_sensors, gather_all = solids.gather_sensors, solids.gather_all
+local response_of = hits.response
+local stop_forward, stop_backward, box_enter = sweep.stop_forward, sweep.stop_backward,
+  sweep.box_enter
+local add_hit, has_tile = hits.add, hits.has_tile
+local SLIDE, TOUCH, BOUNCE, CROSS = hits.SLIDE, hits.TOUCH, hits.BOUNCE, hits.CROSS
 local RULES, oneway_rule, resolve_pair = resolve.RULES, resolve.oneway, fatcross.resolve_pair
 local ceil, sort, format = math.ceil, table.sort, string.format
 
@@ -42,6 +47,10 @@ local MAX_SLIDES = 3
 -- steps grow (each still exact; the hash walks its box list for a big step) so that a
 -- move across far-apart solids does bounded work.
 local MAX_STEPS = 4096
+-- An axis_sweep phase reflects off at most this many faces (a box bouncing in a gap
+-- narrower than its move); it stops at the last one.
+local MAX_BOUNCES = 16
+local HUGE = math.huge
 
 local move = {}
 
@@ -73,13 +82,14 @@ end
 
 -- Moves `actor`'s box, at `pos` on the axis and `cross` across it, by `delta` along the
 -- axis, up to the nearest stop among tiles and boxes; returns the new position on that
--- axis and records the contacts that stop it there. probe.actor and probe.filter are set
--- by the caller (the hash scan's filter calls read them there).
--- LuaJIT shaping: nine positional parameters, on purpose. Reading the actor, filter and
--- sizes from the probe inside made make bench-jit's platformer compile more code (580
+-- axis and records the contacts that stop it there (with t 0: the caller knows the
+-- time). For an actor with no filter: everything blocks and slides (filtered_phase
+-- below asks a filter).
+-- LuaJIT shaping: positional parameters, on purpose. Reading the sizes from the probe
+-- inside made make bench-jit's platformer compile more code (580
 -- traces, 758 KB against 512 and 643, median of 5 runs with a budget that never runs
 -- out, 2026-12-01) and flush more often at the default budget.
-local function axis_phase(world, actor, filter, is_x, pos, cross, size, cross_size, delta)
+local function axis_phase(world, is_x, pos, cross, size, cross_size, delta)
   local probe = world._probe
   local forward = delta > 0
   probe.is_x, probe.forward, probe.delta = is_x, forward, delta
@@ -96,7 +106,7 @@ local function axis_phase(world, actor, filter, is_x, pos, cross, size, cross_si
     -- a layer removed by a filter earlier in this move is skipped (one the filter removes
     -- now, returning true, is met this once, as a solid is)
     local record = world._records[tiles]
-    if record and (filter == nil or filter(actor, tiles)) then
+    if record then
       local face, count = tile_face(tiles, probe)
       local stop = face
       if face then
@@ -110,7 +120,7 @@ local function axis_phase(world, actor, filter, is_x, pos, cross, size, cross_si
         for c = 1, count do
           local col, row = cols[c], rows[c]
           add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
-            tiles.x + (col - 1) * tiles.tile_width, id)
+            tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, 0)
         end
       end
     end
@@ -125,26 +135,286 @@ local function axis_phase(world, actor, filter, is_x, pos, cross, size, cross_si
       for t = 1, probe.touched do
         local record = touch[t]
         local item = record.item
-        add_hit(world, item, side, nil, nil, item.y, item.x, record.id)
+        add_hit(world, item, side, nil, nil, item.y, item.x, record.id, SLIDE, 0)
       end
     end
   end
   if best == nil then return pos + delta end
   return best
 end
-move.axis_phase = axis_phase
+
+-- Writes `t` into the world's hits first..n.
+local function set_t(world, first, t)
+  local list = world._hits
+  for i = first, world._n_hits do list[i].t = t end
+end
+
+-- Reports the candidates of the cross set that the box's path along the axis passes
+-- through (strictly), from `pos` to `final`, as "cross" hits: entered (the leading edge
+-- reaching them) at t0 + distance * scale, or at t0 with no side when the box overlaps
+-- them at `pos` already. Only those entered between `from` and `to` along the path (a
+-- chunk of a long move) are reported, so a candidate two chunks gather is reported once;
+-- and once per move: a record stamped by this move, or a tile already among the hits
+-- (looked for from the second phase on), is not reported again.
+local function report_crossings(world, cross, is_x, forward, pos, final, size, cross_lo,
+                                cross_hi, t0, scale, from, to)
+  local xs, ys, ws, hs, other = cross.x, cross.y, cross.w, cross.h, cross.other
+  local cols, rows, ids, records = cross.col, cross.row, cross.id, cross.record
+  local stamp, later = world._move_stamp, world._round > 1
+  local edge = pos + size
+  local side
+  if is_x then side = forward and "right" or "left" else side = forward and "floor" or "ceiling" end
+  for i = 1, cross.n do
+    local low, length, across, across_length
+    if is_x then low, length, across, across_length = xs[i], ws[i], ys[i], hs[i]
+    else low, length, across, across_length = ys[i], hs[i], xs[i], ws[i] end
+    if across < cross_hi and cross_lo < across + across_length then
+      local distance, on_path
+      if forward then
+        distance, on_path = low - edge, low < final + size and low + length > pos
+      else
+        distance, on_path = pos - (low + length), low + length > final and low < edge
+      end
+      if on_path and distance >= from and distance < to then
+        local record, fresh = records[i], true
+        if record then
+          if record._cross_stamp == stamp then fresh = false else record._cross_stamp = stamp end
+        elseif later and has_tile(world, 1, other[i], cols[i], rows[i]) then
+          fresh = false
+        end
+        if fresh then
+          local inside = distance < 0
+          add_hit(world, other[i], not inside and side or nil, cols[i], rows[i], ys[i], xs[i],
+            ids[i], CROSS, inside and t0 or t0 + distance * scale)
+        end
+      end
+    end
+  end
+end
+
+-- axis_phase for an actor with a filter: the filter chooses each thing's response, other
+-- actors and sensors are met too, and the move is looked at in chunks of at least a cell
+-- (at most MAX_STEPS of them), nearest first, so that the work follows the distance to
+-- the first stop. In each chunk the filter is asked about what the box's path meets, in
+-- the order it meets it (at the same distance: by the order added, then row, then
+-- column), up to the first thing that stops it: nothing beyond is asked about. Returns
+-- the new position and the response that stopped the box there (nil when nothing did):
+-- "touch" if any of what it met there chose it, else "bounce" if any did, else "slide".
+-- Records the contacts at the stop and the crossings on the way.
+local function filtered_phase(world, is_x, pos, cross, size, cross_size, delta, t0, scale)
+  local probe = world._probe
+  local actor, filter = probe.actor, probe.filter
+  local records_of = world._records
+  local forward = delta > 0
+  local edge = pos + size
+  local reach = forward and edge + delta or pos + delta
+  local blocks_oneway = not is_x and forward
+  local cross_end = cross + cross_size
+  local total = forward and delta or -delta
+  local step = world.cell_size
+  if total > step * MAX_STEPS then step = total / MAX_STEPS end
+  local chunks = ceil(total / step)
+  local side
+  if is_x then side = forward and "right" or "left" else side = forward and "floor" or "ceiling" end
+  for k = 0, chunks - 1 do
+    local from = k == 0 and -HUGE or k * step
+    local to = k == chunks - 1 and HUGE or (k + 1) * step
+    local low, high -- the band of the axis this chunk looks at
+    if forward then
+      low, high = k == 0 and pos or edge + k * step, edge + (k == chunks - 1 and total or to)
+    else
+      low, high = pos - (k == chunks - 1 and total or to), k == 0 and edge or pos - k * step
+    end
+    local set
+    if is_x then set = gather_all(world, low, cross, high - low, cross_size, true)
+    else set = gather_all(world, cross, low, cross_size, high - low, true) end
+    local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
+    local cols, rows, ids, records, keys = set.col, set.row, set.id, set.record, set.key
+    local order, met = set.touch, 0
+    -- what the path meets in this chunk, by distance along it (0: at the start)
+    for i = 1, set.n do
+      local near, length, across, across_length
+      if is_x then near, length, across, across_length = xs[i], ws[i], ys[i], hs[i]
+      else near, length, across, across_length = ys[i], hs[i], xs[i], ws[i] end
+      if across < cross_end and cross < across + across_length then
+        local distance, on_path
+        if forward then
+          distance, on_path = near - edge, near < reach and near + length > pos
+        else
+          distance, on_path = pos - (near + length), near + length > reach and near < edge
+        end
+        if on_path and distance >= from and distance < to then
+          local key = distance > 0 and distance or 0
+          keys[i] = key
+          local j = met
+          while j >= 1 and (keys[order[j]] > key or (keys[order[j]] == key
+            and (ids[order[j]] > ids[i] or (ids[order[j]] == ids[i]
+            and ((rows[order[j]] or 0) > (rows[i] or 0) or ((rows[order[j]] or 0) == (rows[i] or 0)
+            and (cols[order[j]] or 0) > (cols[i] or 0))))))) do
+            order[j + 1] = order[j]
+            j = j - 1
+          end
+          order[j + 1] = i
+          met = met + 1
+        end
+      end
+    end
+    -- ask the filter in that order, up to the first stop
+    local best, best_key, touched = nil, nil, 0
+    local crossed = world._crossed
+    local n_crossed = 0
+    for c = 1, met do
+      local i = order[c]
+      local key = keys[i]
+      if best_key ~= nil and key > best_key then break end
+      local record = records[i]
+      local response
+      if record then
+        if not record.removed then
+          response = response_of(filter(actor, other[i]), other[i])
+          if response ~= nil and record.kind == "sensor" then response = CROSS end
+        end
+      else
+        local tiles = other[i]
+        local layer_record = records_of[tiles]
+        if layer_record and not layer_record.removed then
+          local col, row = cols[i], rows[i]
+          response = response_of(filter(actor, tiles, col, row,
+            tiles._ids[(row - 1) * tiles.cols + col]), tiles)
+        end
+      end
+      if response == CROSS then
+        n_crossed = n_crossed + 1
+        crossed[n_crossed] = i
+      elseif response ~= nil then
+        local stop
+        local near = is_x and xs[i] or ys[i]
+        if forward then
+          stop = stop_forward(near, pos, edge, reach, size, oneway[i], blocks_oneway)
+        else
+          stop = stop_backward(near + (is_x and ws[i] or hs[i]), pos, edge, reach, oneway[i],
+            blocks_oneway)
+        end
+        if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
+          if stop ~= best then best = stop; touched = 0 end
+          best_key = key
+          touched = touched + 1
+          set.normal[touched] = i
+          set.response[i] = response
+        end
+      end
+    end
+    -- the crossings before the stop (or overlapping the box where it started)
+    local stamp, later = world._move_stamp, world._round > 1
+    for c = 1, n_crossed do
+      local i = crossed[c]
+      local near, length = is_x and xs[i] or ys[i], is_x and ws[i] or hs[i]
+      local distance = forward and near - edge or pos - (near + length)
+      if best_key == nil or distance < 0 or keys[i] < best_key then
+        local record, fresh = records[i], true
+        if record then
+          if record._cross_stamp == stamp then fresh = false else record._cross_stamp = stamp end
+        elseif later and has_tile(world, 1, other[i], cols[i], rows[i]) then
+          fresh = false
+        end
+        if fresh then
+          local inside = distance < 0
+          add_hit(world, other[i], not inside and side or nil, cols[i], rows[i], ys[i], xs[i],
+            ids[i], CROSS, inside and t0 or t0 + distance * scale)
+        end
+      end
+    end
+    if best then
+      local response = SLIDE
+      local t = t0 + (forward and best - pos or pos - best) * scale
+      local responses, touch = set.response, set.normal
+      for c = 1, touched do
+        local i = touch[c]
+        local chosen = responses[i]
+        if chosen == TOUCH then response = TOUCH
+        elseif chosen == BOUNCE and response ~= TOUCH then response = BOUNCE end
+        add_hit(world, other[i], side, cols[i], rows[i], ys[i], xs[i], ids[i], chosen, t)
+      end
+      return best, response
+    end
+  end
+  return pos + delta, nil
+end
+
+-- One axis of an axis_sweep move, from time t0 of the move at `scale` per px: the
+-- contacts that stop it, the sensors (and with a filter, whatever it crosses) on the way,
+-- and bounces. Returns the new position and the response that stopped it ("touch" ends
+-- the whole move).
+local function run_phase(world, filter, is_x, pos, cross, size, cross_size, delta, t0, scale)
+  world._round = world._round + 1
+  if filter == nil then
+    local first = world._n_hits + 1
+    local stop = axis_phase(world, is_x, pos, cross, size, cross_size, delta)
+    if first <= world._n_hits then
+      set_t(world, first, t0 + (stop < pos and pos - stop or stop - pos) * scale)
+    end
+    if world._sensor_count > 0 then
+      local low = stop < pos and stop or pos
+      local length = (stop < pos and pos - stop or stop - pos) + size
+      local crossing
+      if is_x then crossing = gather_sensors(world, low, cross, length, cross_size)
+      else crossing = gather_sensors(world, cross, low, cross_size, length) end
+      report_crossings(world, crossing, is_x, delta > 0, pos, stop, size, cross,
+        cross + cross_size, t0, scale, -HUGE, HUGE)
+    end
+    return stop, nil
+  end
+  for _ = 1, MAX_BOUNCES do
+    local stop, response = filtered_phase(world, is_x, pos, cross, size, cross_size, delta, t0,
+      scale)
+    if response ~= BOUNCE then return stop, response end
+    local travelled = stop < pos and pos - stop or stop - pos
+    local rest = (delta < 0 and -delta or delta) - travelled
+    if rest <= 0 then return stop, response end
+    t0 = t0 + travelled * scale
+    pos, delta = stop, delta > 0 and -rest or rest
+    world._round = world._round + 1
+  end
+  return pos, BOUNCE
+end
+
+---One axis of a push (carry.lua): moves the actor's box by `delta` along the axis against
+---what blocks it (the filter's "slide", "touch" and "bounce" all block; nothing bounces),
+---the moving solid aside. Returns the new position and whether anything stopped it.
+---probe.actor and probe.filter are set by the caller.
+---@param world budge.World
+---@param filter? function
+---@param is_x boolean
+---@param pos number
+---@param cross number
+---@param size number
+---@param cross_size number
+---@param delta number
+---@return number position, boolean blocked
+function move.push_phase(world, filter, is_x, pos, cross, size, cross_size, delta)
+  world._n_hits = 0
+  if filter == nil then
+    local stop = axis_phase(world, is_x, pos, cross, size, cross_size, delta)
+    return stop, world._n_hits > 0
+  end
+  world._round, world._move_stamp = 1, world._move_stamp + 1
+  local stop, response = filtered_phase(world, is_x, pos, cross, size, cross_size, delta, 0, 0)
+  return stop, response ~= nil
+end
 
 local function move_axis_sweep(world, actor, dx, dy, filter)
   local probe = world._probe
   probe.actor, probe.filter = actor, filter
   local x, y = actor.x, actor.y
+  local adx = dx < 0 and -dx or dx
+  local scale = 1 / (adx + (dy < 0 and -dy or dy)) -- x takes the first adx of the path
+  local response
   if dx ~= 0 then
-    world._round = 1
-    x = axis_phase(world, actor, filter, true, x, y, actor.width, actor.height, dx)
+    x, response = run_phase(world, filter, true, x, y, actor.width, actor.height, dx, 0, scale)
   end
-  if dy ~= 0 then
-    world._round = 2
-    y = axis_phase(world, actor, filter, false, y, x, actor.height, actor.width, dy)
+  if dy ~= 0 and response ~= TOUCH then
+    y = run_phase(world, filter, false, y, x, actor.height, actor.width, dy, adx * scale,
+      scale)
   end
   probe.actor, probe.filter = nil, nil
   actor.x, actor.y = x, y
@@ -152,19 +422,55 @@ end
 
 -- swept ------------------------------------------------------------------------------
 
+-- Reports the candidates of the cross set that the box (x, y, width, height) moving by
+-- (dx, dy) enters (strictly) at a fraction of that motion in [from, to) and before
+-- `contact`, as "cross" hits at time t0 + (1 - t0) * fraction of the move; once per move,
+-- as report_crossings does.
+local function report_swept_crossings(world, cross, x, y, width, height, dx, dy, from, to,
+                                      contact, t0)
+  local xs, ys, ws, hs, other = cross.x, cross.y, cross.w, cross.h, cross.other
+  local cols, rows, ids, records = cross.col, cross.row, cross.id, cross.record
+  local stamp, later = world._move_stamp, world._round > 1
+  for i = 1, cross.n do
+    local enter, axis = box_enter(x, y, width, height, dx, dy, xs[i], ys[i], ws[i], hs[i])
+    if enter and enter >= from and enter < to and enter < contact then
+      local record, fresh = records[i], true
+      if record then
+        if record._cross_stamp == stamp then fresh = false else record._cross_stamp = stamp end
+      elseif later and has_tile(world, 1, other[i], cols[i], rows[i]) then
+        fresh = false
+      end
+      if fresh then
+        local side
+        if axis == 1 then side = dx > 0 and "right" or "left"
+        elseif axis == 2 then side = dy > 0 and "floor" or "ceiling" end
+        add_hit(world, other[i], side, cols[i], rows[i], ys[i], xs[i], ids[i], CROSS,
+          t0 + (1 - t0) * enter)
+      end
+    end
+  end
+end
+
 -- Travels from (x, y) along (dx, dy) in chunks no longer than a cell, so a huge move
--- looks at a thin band of the world, until the first contact. Returns the position
--- reached and, on a contact, whether x and y are blocked and the fraction travelled.
-local function advance(world, x, y, dx, dy, round)
-  local actor = world._probe.actor
+-- looks at a thin band of the world, until the first contact; this motion is the part
+-- of the move from time t0 on. Returns the position reached and, on a contact, whether x
+-- and y are blocked, the fraction travelled and the response that stopped it.
+local function advance(world, x, y, dx, dy, round, t0)
+  local probe = world._probe
+  local actor, filter = probe.actor, probe.filter
   local width, height = actor.width, actor.height
-  local enter, leave = clip_to_bounds(world, x, y, width, height, dx, dy)
-  if enter == nil then return x + dx, y + dy, nil end
+  local enter, leave = 0, 1
+  -- only solids and tiles block an actor with no filter, and sensors are crossed
+  if filter == nil and world._sensor_count == 0 then
+    enter, leave = clip_to_bounds(world, x, y, width, height, dx, dy)
+    if enter == nil then return x + dx, y + dy, nil end
+  end
   local adx, ady = dx < 0 and -dx or dx, dy < 0 and -dy or dy
   local length = (adx > ady and adx or ady) * (leave - enter)
   local chunks = ceil(length / world.cell_size)
   if chunks < 1 then chunks = 1 elseif chunks > MAX_STEPS then chunks = MAX_STEPS end
   local span = leave - enter
+  world._round = round
   for k = 1, chunks do
     local t_from = enter + span * (k - 1) / chunks
     local t_to = k == chunks and leave or enter + span * k / chunks
@@ -173,8 +479,13 @@ local function advance(world, x, y, dx, dy, round)
     local left = step_x < 0 and from_x + step_x or from_x
     local top = step_y < 0 and from_y + step_y or from_y
     local reach_x, reach_y = step_x < 0 and -step_x or step_x, step_y < 0 and -step_y or step_y
-    local set = gather(world, left, top, width + reach_x, height + reach_y)
+    local set, crossing = gather(world, left, top, width + reach_x, height + reach_y)
     local t = first_contact(set, x, y, from_x, from_y, width, height, step_x, step_y)
+    local contact = t and t_from + (t_to - t_from) * t
+    if crossing.n > 0 then
+      report_swept_crossings(world, crossing, x, y, width, height, dx, dy,
+        k == 1 and -HUGE or t_from, k == chunks and HUGE or t_to, contact or HUGE, t0)
+    end
     if t then
       local touch, normal = set.touch, set.normal
       local blocked_x, blocked_y = false, false
@@ -189,25 +500,35 @@ local function advance(world, x, y, dx, dy, round)
       local new_x, new_y = from_x + step_x * t, from_y + step_y * t
       local xs, ys, ws, hs, other, cols, rows, ids = set.x, set.y, set.w, set.h, set.other,
         set.col, set.row, set.id
+      local responses = set.response
+      local time = t0 + (1 - t0) * contact
+      local response = SLIDE
       for c = 1, set.touch_n do
         local i, kind = touch[c], normal[c]
+        local chosen = filter and responses[i] or SLIDE
         -- a solid the actor started inside stops it where it is (t is 0): no snapping
         local outside = not (xs[i] < x + width and x < xs[i] + ws[i] and ys[i] < y + height
           and y < ys[i] + hs[i])
+        local side
         if kind == NORMAL_X then
           world._round = round
           if not outside then new_x = from_x
           elseif step_x > 0 then new_x = before(xs[i], width, from_x) else new_x = xs[i] + ws[i] end
-          add_hit(world, other[i], step_x > 0 and "right" or "left", cols[i], rows[i], ys[i], xs[i], ids[i])
+          side = step_x > 0 and "right" or "left"
         elseif kind == NORMAL_Y or corners_block then
           world._round = round + 1
           if not outside then new_y = from_y
           elseif step_y > 0 then new_y = before(ys[i], height, from_y)
           else new_y = ys[i] + hs[i] end
-          add_hit(world, other[i], step_y > 0 and "floor" or "ceiling", cols[i], rows[i], ys[i], xs[i], ids[i])
+          side = step_y > 0 and "floor" or "ceiling"
+        end
+        if side then
+          if chosen == TOUCH then response = TOUCH
+          elseif chosen == BOUNCE and response ~= TOUCH then response = BOUNCE end
+          add_hit(world, other[i], side, cols[i], rows[i], ys[i], xs[i], ids[i], chosen, time)
         end
       end
-      return new_x, new_y, blocked_x, blocked_y, t_from + (t_to - t_from) * t
+      return new_x, new_y, blocked_x, blocked_y, contact, response
     end
   end
   return x + dx, y + dy, nil
@@ -218,15 +539,19 @@ local function move_swept(world, actor, dx, dy, filter)
   probe.actor, probe.filter = actor, filter
   local x, y = actor.x, actor.y
   local target_x, target_y = x + dx, y + dy
+  local t0 = 0
   for slide = 1, MAX_SLIDES do
     if dx == 0 and dy == 0 then break end
-    local blocked_x, blocked_y, travelled
-    x, y, blocked_x, blocked_y, travelled = advance(world, x, y, dx, dy, slide * 2 - 1)
-    if blocked_x == nil then break end
-    -- slide: what is left of the move, less the blocked component
+    local blocked_x, blocked_y, travelled, response
+    x, y, blocked_x, blocked_y, travelled, response = advance(world, x, y, dx, dy,
+      slide * 2 - 1, t0)
+    if blocked_x == nil or response == TOUCH then break end
+    -- slide (or bounce): what is left of the move, less (or reflecting) the blocked part
     local rest = 1 - travelled
-    dx = blocked_x and 0 or dx * rest
-    dy = blocked_y and 0 or dy * rest
+    t0 = t0 + (1 - t0) * travelled
+    local keep = response == BOUNCE and -rest or 0
+    dx = blocked_x and dx * keep or dx * rest
+    dy = blocked_y and dy * keep or dy * rest
   end
   -- the slides' pieces, each rounded, can add up to an ulp more than the move: never
   -- further than asked
@@ -252,19 +577,9 @@ function move.candidate_order(set)
   end
 end
 
--- Moves the whole way, then pushes the actor out of each solid it overlaps, top row
--- first and left to right, with the entry's one-box rule.
-local function move_discrete(world, actor, dx, dy, filter, entry)
-  local prev_y = actor.y
-  local x, y, width, height = actor.x + dx, actor.y + dy, actor.width, actor.height
-  local probe = world._probe
-  probe.actor, probe.filter = actor, filter
-  -- the filter runs here, before the actor moves: if it raises an error, nothing moved
-  local set = gather(world, x, y, width, height)
-  probe.actor, probe.filter = nil, nil
-  actor.x, actor.y = x, y
-  local n = set.n
-  if n == 0 then return end
+-- The push-outs of a discrete move: each candidate the actor overlaps, in candidate
+-- order, with the method's one-box rule.
+local function resolve_discrete(world, actor, set, n, dx, dy, prev_y, filter, entry)
   local order = world._order
   for i = 1, n do order[i] = i end
   for i = n + 1, #order do order[i] = nil end
@@ -275,7 +590,7 @@ local function move_discrete(world, actor, dx, dy, filter, entry)
   local rule, crossed = entry.rule, entry.name == "fat_cross"
   local speed = dx < 0 and -dx or dx
   if dy > speed then speed = dy elseif -dy > speed then speed = -dy end
-  world._round = 1
+  local responses = set.response
   for k = 1, n do
     local i = order[k]
     local target = other[i]
@@ -302,7 +617,36 @@ local function move_discrete(world, actor, dx, dy, filter, entry)
       local side
       if push_y < 0 then side = "floor" elseif push_y > 0 then side = "ceiling"
       elseif push_x < 0 then side = "right" elseif push_x > 0 then side = "left" end
-      if side then add_hit(world, other[i], side, cols[i], rows[i], ys[i], xs[i], ids[i]) end
+      if side then
+        add_hit(world, other[i], side, cols[i], rows[i], ys[i], xs[i], ids[i],
+          filter and responses[i] or SLIDE, 1)
+      end
+    end
+  end
+end
+
+-- Moves the whole way, then pushes the actor out of each solid it overlaps, top row
+-- first and left to right, with the entry's one-box rule. Every blocking response is
+-- that push (a discrete method has no path to touch or bounce along); contacts have t 1.
+local function move_discrete(world, actor, dx, dy, filter, entry)
+  local prev_y = actor.y
+  local x, y, width, height = actor.x + dx, actor.y + dy, actor.width, actor.height
+  local probe = world._probe
+  probe.actor, probe.filter = actor, filter
+  -- the filter runs here, before the actor moves: if it raises an error, nothing moved
+  local set, crossing = gather(world, x, y, width, height)
+  probe.actor, probe.filter = nil, nil
+  actor.x, actor.y = x, y
+  local n = set.n
+  world._round = 1
+  if n > 0 then resolve_discrete(world, actor, set, n, dx, dy, prev_y, filter, entry) end
+  -- what it crosses: what the box overlaps where it ends (a discrete method has no path)
+  local xs, ys, ws, hs = crossing.x, crossing.y, crossing.w, crossing.h
+  for i = 1, crossing.n do
+    if xs[i] < actor.x + width and actor.x < xs[i] + ws[i] and ys[i] < actor.y + height
+      and actor.y < ys[i] + hs[i] then
+      add_hit(world, crossing.other[i], nil, crossing.col[i], crossing.row[i], ys[i], xs[i],
+        crossing.id[i], CROSS, 1)
     end
   end
 end

@@ -1,9 +1,10 @@
 -- budge.query: the bodies of the world's queries, called with checked arguments.
 --
--- Boxes (solids and actors) come from the two spatial hashes, tile layers from their
--- grids; results are sorted into the order items were added (segments: by where the
--- segment enters them, then that order) with table.sort and a total order, never by
+-- Boxes (solids, actors and sensors) come from the spatial hashes, tile layers from their
+-- grids; results are sorted into the order items were added (segments and sweeps: by
+-- where they enter them, then that order) with table.sort and a total order, never by
 -- pairs(). With a caller-given `out` a query allocates nothing once the world is warm.
+-- A query's filter(item) runs on the sorted results, under the caller's guard.
 
 local here = (...):match("^(.*)%.[^%.]+$")
 local sweep = require(here .. ".sweep")
@@ -12,7 +13,7 @@ local solids = require(here .. ".solids")
 local actors = require(here .. ".actors")
 
 local sort = table.sort
-local segment_enter = sweep.segment_enter
+local segment_enter, box_enter = sweep.segment_enter, sweep.box_enter
 local segment_first, touches = layer.segment_first, layer.touches
 
 local query = {}
@@ -25,7 +26,8 @@ local function segment_before(a, b)
   return a.id < b.id
 end
 
--- Records of boxes (solids and actors) that touch the rectangle, into world._found.
+-- Records of boxes (solids, actors and sensors) that touch the rectangle, into
+-- world._found.
 local function collect_boxes(world, x, y, width, height)
   actors.rehash(world)
   local found = world._found
@@ -41,27 +43,50 @@ local function collect_boxes(world, x, y, width, height)
   else
     for i = 1, #list do n = n + 1; found[n] = list[i] end
   end
+  if world._sensor_count > 0 then
+    n = world._sensors:collect(x, y, width, height, found, n)
+  end
   return n
 end
 
--- The items of found[1..n] into out[1..n]; clears found and the rest of out.
-local function finish(found, n, out)
-  local old = #out
-  for i = 1, n do out[i] = found[i].item; found[i] = nil end
-  for i = n + 1, old do out[i] = nil end
-  return out, n
+---The items of the query's results (world._found[1..n], sorted) into out[1..n], those
+---`filter` refuses left out (and their entries of out_t with them); clears the results
+---and the rest of out and out_t. Returns the new count.
+---@param world budge.World
+---@param n integer
+---@param out table
+---@param filter? fun(item: any): any
+---@param out_t? number[]
+---@return integer n
+function query.finish(world, n, out, filter, out_t)
+  local found = world._found
+  local old, kept = #out, 0
+  for i = 1, n do
+    local record = found[i]
+    found[i] = nil
+    if filter == nil or filter(record.item) then
+      kept = kept + 1
+      out[kept] = record.item
+      if out_t then out_t[kept] = record._t end
+    end
+  end
+  for i = kept + 1, old do out[i] = nil end
+  if out_t then
+    for i = kept + 1, #out_t do out_t[i] = nil end
+  end
+  return kept
 end
 
----Every solid, actor and tile layer (once, when any of its solid tiles does) that
----strictly overlaps the rectangle, in the order they were added, into `out`.
+---Every solid, actor, sensor and tile layer (once, when any of its solid tiles does)
+---that strictly overlaps the rectangle, sorted by the order they were added, into
+---world._found (query.finish takes them out); returns how many.
 ---@param world budge.World
 ---@param x number
 ---@param y number
 ---@param width number
 ---@param height number
----@param out table
----@return table out, integer n
-function query.area(world, x, y, width, height, out)
+---@return integer n
+function query.area(world, x, y, width, height)
   local found = world._found
   local count = collect_boxes(world, x, y, width, height)
   local n = 0
@@ -85,32 +110,41 @@ function query.area(world, x, y, width, height, out)
   end
   for i = n + 1, #found do found[i] = nil end
   sort(found, record_before)
-  return finish(found, n, out)
+  return n
 end
 
----Every solid, actor and tile layer the segment from (x1, y1) to (x2, y2) passes
----through (strictly inside), sorted by where it enters them, then by the order they were
----added; out_t[i] is that fraction of the segment. For a tile layer, the first solid
----tile met.
+---Every solid, actor, sensor and tile layer that a box of (width, height) with its
+---top-left corner moving from (x1, y1) to (x2, y2) overlaps (strictly) on the way (a
+---segment when the size is 0), sorted by where it enters them, then by the order they
+---were added, into world._found (query.finish takes them out, with the fraction of the
+---motion where each is entered, 0 when it starts inside); returns how many. For a tile
+---layer, the first solid tile met.
 ---@param world budge.World
 ---@param x1 number
 ---@param y1 number
 ---@param x2 number
 ---@param y2 number
----@param out table
----@param out_t number[]
----@return table out, integer n, number[] out_t
-function query.segment(world, x1, y1, x2, y2, out, out_t)
+---@param width number
+---@param height number
+---@return integer n
+function query.sweep(world, x1, y1, x2, y2, width, height)
   local dx, dy = x2 - x1, y2 - y1
   local left, top = x1 < x2 and x1 or x2, y1 < y2 and y1 or y2
-  local width, height = dx < 0 and -dx or dx, dy < 0 and -dy or dy
+  local reach_x, reach_y = dx < 0 and -dx or dx, dy < 0 and -dy or dy
   local found = world._found
-  local count = collect_boxes(world, left, top, width, height)
+  local count = collect_boxes(world, left, top, reach_x + width, reach_y + height)
   local n = 0
+  local point = width == 0 and height == 0
   for i = 1, count do
     local record = found[i]
     found[i] = nil
-    local t = segment_enter(x1, y1, dx, dy, record.x, record.y, record.width, record.height)
+    local t
+    if point then -- (the segment rule: a zero-size box inside a zero-size one is met)
+      t = segment_enter(x1, y1, dx, dy, record.x, record.y, record.width, record.height)
+    else
+      t = box_enter(x1, y1, width, height, dx, dy, record.x, record.y, record.width,
+        record.height)
+    end
     if t then
       n = n + 1
       found[n] = record
@@ -120,7 +154,7 @@ function query.segment(world, x1, y1, x2, y2, out, out_t)
   local layers, records, set = world._layers, world._records, world._set
   for k = 1, #layers do
     local tiles = layers[k]
-    local t = segment_first(tiles, x1, y1, dx, dy, set)
+    local t = segment_first(tiles, x1, y1, dx, dy, set, width, height)
     if t then
       local record = records[tiles]
       n = n + 1
@@ -130,11 +164,14 @@ function query.segment(world, x1, y1, x2, y2, out, out_t)
   end
   for i = n + 1, #found do found[i] = nil end
   sort(found, segment_before)
-  local old = #out_t
-  for i = 1, n do out_t[i] = found[i]._t end
-  for i = n + 1, old do out_t[i] = nil end
-  local result, total = finish(found, n, out)
-  return result, total, out_t
+  return n
+end
+
+---What an error a query's filter raised leaves: no results.
+---@param world budge.World
+function query.abandon(world)
+  local found = world._found
+  for i = #found, 1, -1 do found[i] = nil end
 end
 
 return query

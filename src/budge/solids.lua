@@ -10,9 +10,13 @@
 local here = (...):match("^(.*)%.[^%.]+$")
 local layer = require(here .. ".layer")
 local sweep = require(here .. ".sweep")
+local hits = require(here .. ".hits")
+local actors = require(here .. ".actors")
 
 local clip_axis = sweep.clip_axis
 local gather_layer = layer.gather
+local SLIDE, CROSS = hits.SLIDE, hits.CROSS
+local response_of = hits.response
 
 local solids = {}
 
@@ -127,48 +131,197 @@ function solids.clip_to_bounds(world, x, y, width, height, dx, dy)
   return enter, leave
 end
 
----Fills the world's candidate set with the hashed solid boxes that touch the rectangle,
----skipping those the moving actor's filter refuses, and then with the tiles of every
----layer the filter accepts. The actor and its filter are the world's probe's (set by the
----move). Returns the set.
+-- Appends a candidate (a tile, or a record's box) to the cross set.
+local function to_cross(cross, x, y, w, h, other, col, row, id, record)
+  local n = cross.n + 1
+  cross.x[n], cross.y[n], cross.w[n], cross.h[n] = x, y, w, h
+  cross.other[n], cross.col[n], cross.row[n], cross.id[n] = other, col, row, id
+  cross.record[n] = record
+  cross.n = n
+end
+
+-- Asks the filter about each tile gather_layer appended to the set after index `first`
+-- (with its col, row and id): keeps those it blocks with, moves those it crosses to the
+-- cross set, drops the others. Once the filter removes the layer, the tiles it was not
+-- asked about are dropped.
+local function filter_tiles(set, first, cross, tiles, actor, filter, record)
+  local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
+  local cols, rows, ids, responses = set.col, set.row, set.id, set.response
+  local tile_ids, stride = tiles._ids, tiles.cols
+  local n = first
+  for i = first + 1, set.n do
+    if record.removed then break end -- the filter removed the layer: ask no more
+    local col, row = cols[i], rows[i]
+    local response = response_of(filter(actor, tiles, col, row,
+      tile_ids[(row - 1) * stride + col]), tiles)
+    if response == CROSS then
+      to_cross(cross, xs[i], ys[i], ws[i], hs[i], tiles, col, row, ids[i], false)
+    elseif response ~= nil then
+      n = n + 1
+      xs[n], ys[n], ws[n], hs[n], oneway[n] = xs[i], ys[i], ws[i], hs[i], oneway[i]
+      other[n], cols[n], rows[n], ids[n], responses[n] = tiles, col, row, ids[i], response
+    end
+  end
+  set.n = n
+end
+
+-- Appends the records found[1..count] (boxes: solids, sensors or actors) to the set or
+-- the cross set by the response `default` or the filter's, skipping removed records,
+-- `self` (the moving actor's record) and what the filter ignores. `sensor`: the response
+-- only decides whether it is met, always as "cross".
+local function sort_records(found, count, set, cross, n, actor, filter, default, sensor, self)
+  local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
+  local cols, rows, ids, responses = set.col, set.row, set.id, set.response
+  for i = 1, count do
+    local record = found[i]
+    found[i] = nil
+    local item = record.item
+    if not record.removed and record ~= self then
+      local response = default
+      if filter ~= nil then response = hits.response(filter(actor, item), item) end
+      if response ~= nil then
+        if sensor or response == CROSS then
+          to_cross(cross, record.x, record.y, record.width, record.height, item, nil, nil,
+            record.id, record)
+        else
+          n = n + 1
+          xs[n], ys[n], ws[n], hs[n] = record.x, record.y, record.width, record.height
+          oneway[n], other[n], cols[n], rows[n], ids[n] = record.oneway, item, nil, nil, record.id
+          responses[n] = response
+        end
+      end
+    end
+  end
+  return n
+end
+
+---Fills the world's candidate set with what the rectangle may meet: the hashed solid
+---boxes that touch it and the tiles of every layer that overlap it, each with the
+---response the moving actor's filter chose ("slide" with no filter), skipping what it
+---ignores. What the actor only crosses goes into the world's cross set instead: sensors
+---(unless the filter ignores them), and anything the filter answers "cross" for. With a
+---filter, other actors are candidates too. The actor and its filter are the world's
+---probe's (set by the move). Returns the set and the cross set.
 ---@param world budge.World
 ---@param x number
 ---@param y number
 ---@param width number
 ---@param height number
----@return budge.CandidateSet
+---@return budge.CandidateSet set, budge.CandidateSet cross
 function solids.gather(world, x, y, width, height)
   local probe = world._probe
   local actor, filter = probe.actor, probe.filter
-  local set = world._set
+  local set, cross = world._set, world._cross
+  cross.n = 0
   local n = 0
+  local found = world._found
   local bx, by, bx1, by1 = clip_to_boxes(world, x, y, x + width, y + height)
   if bx <= bx1 and by <= by1 and world._solid_count > 0 then
-    local found = world._found
     local count = world._solids:collect(bx, by, bx1 - bx, by1 - by, found, 0)
-    local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
-    local cols, rows, ids = set.col, set.row, set.id
-    for i = 1, count do
-      local record = found[i]
-      found[i] = nil
-      local solid = record.item
-      if not record.removed and (filter == nil or filter(actor, solid)) then
-        n = n + 1
-        xs[n], ys[n], ws[n], hs[n] = record.x, record.y, record.width, record.height
-        oneway[n], other[n], cols[n], rows[n], ids[n] = record.oneway, solid, nil, nil, record.id
-      end
-    end
+    n = sort_records(found, count, set, cross, n, actor, filter, SLIDE, false, nil)
   end
   set.n = n
   local layers, records = world._layers, world._records
   for k = 1, #layers do
     local tiles = layers[k]
     local record = records[tiles] -- (read before the filter, which may remove the layer)
-    if record and (filter == nil or filter(actor, tiles)) then
+    if record then
       gather_layer(tiles, x, y, width, height, set, record.id)
+      if filter ~= nil then filter_tiles(set, n, cross, tiles, actor, filter, record) end
+      n = set.n
     end
   end
+  if world._sensor_count > 0 then
+    local count = world._sensors:collect(x, y, width, height, found, 0)
+    sort_records(found, count, set, cross, 0, actor, filter, CROSS, true, nil)
+  end
+  if filter ~= nil and #world._actor_list > 1 then
+    actors.rehash(world)
+    local count = world._actors:collect(x, y, width, height, found, 0)
+    n = sort_records(found, count, set, cross, n, actor, filter, nil, false,
+      world._records[actor])
+    set.n = n
+  end
+  return set, cross
+end
+
+-- Appends the records found[1..count] to the set as they are (no filter asked), each
+-- with its record; skips removed ones and `self`. Returns the set's new count.
+local function append_records(found, count, set, n, self)
+  local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
+  local cols, rows, ids, records = set.col, set.row, set.id, set.record
+  for i = 1, count do
+    local record = found[i]
+    found[i] = nil
+    if not record.removed and record ~= self then
+      n = n + 1
+      xs[n], ys[n], ws[n], hs[n] = record.x, record.y, record.width, record.height
+      oneway[n], other[n], cols[n], rows[n], ids[n] = record.oneway, record.item, nil, nil,
+        record.id
+      records[n] = record
+    end
+  end
+  return n
+end
+
+---Fills the world's candidate set with everything the rectangle may meet, asking no
+---filter: solid boxes, tiles, sensors, and (when `with_actors`) the actors but the moving
+---one (the probe's). set.record[i] is each box's record (false for a tile): the caller
+---asks the filter about those it meets. Returns the set.
+---@param world budge.World
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+---@param with_actors boolean
+---@return budge.CandidateSet
+function solids.gather_all(world, x, y, width, height, with_actors)
+  local set, found = world._set, world._found
+  local n = 0
+  local bx, by, bx1, by1 = clip_to_boxes(world, x, y, x + width, y + height)
+  if bx <= bx1 and by <= by1 and world._solid_count > 0 then
+    local count = world._solids:collect(bx, by, bx1 - bx, by1 - by, found, 0)
+    n = append_records(found, count, set, n, nil)
+  end
+  set.n = n
+  local layers, records = world._layers, world._records
+  for k = 1, #layers do
+    local tiles = layers[k]
+    local record = records[tiles]
+    if record then
+      gather_layer(tiles, x, y, width, height, set, record.id)
+      local records_of = set.record
+      for i = n + 1, set.n do records_of[i] = false end
+      n = set.n
+    end
+  end
+  if world._sensor_count > 0 then
+    n = append_records(found, world._sensors:collect(x, y, width, height, found, 0), set, n,
+      nil)
+  end
+  if with_actors and #world._actor_list > 1 then
+    actors.rehash(world)
+    n = append_records(found, world._actors:collect(x, y, width, height, found, 0), set, n,
+      world._records[world._probe.actor])
+  end
+  set.n = n
   return set
+end
+
+---Fills the world's cross set with the sensors whose boxes touch the rectangle, for an
+---actor with no filter (every sensor is crossed). Returns the cross set.
+---@param world budge.World
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+---@return budge.CandidateSet cross
+function solids.gather_sensors(world, x, y, width, height)
+  local cross, found = world._cross, world._found
+  cross.n = 0
+  local count = world._sensors:collect(x, y, width, height, found, 0)
+  sort_records(found, count, world._set, cross, 0, nil, nil, CROSS, true, nil)
+  return cross
 end
 
 return solids

@@ -34,6 +34,9 @@ sweep.NORMAL_X, sweep.NORMAL_Y, sweep.NORMAL_CORNER = 1, 2, 3
 ---@field col (integer|nil)[] the tile's column (1-based), nil for a box
 ---@field row (integer|nil)[] the tile's row (1-based), nil for a box
 ---@field id integer[] the order its item was added to the world (the last tie-breaker)
+---@field response string[] what the moving actor's filter chose for each (read only when it has one)
+---@field record (budge.Record|false)[] each box's record (false for a tile), where kept
+---@field key number[] scratch of a filtered axis phase: how far along the path each is met
 ---@field touch integer[] first_contact's output: indices of the candidates met first
 ---@field normal integer[] and how each was met (NORMAL_X, NORMAL_Y or NORMAL_CORNER)
 ---@field touch_n integer how many of touch/normal are valid
@@ -43,7 +46,7 @@ sweep.NORMAL_X, sweep.NORMAL_Y, sweep.NORMAL_CORNER = 1, 2, 3
 function sweep.new_set()
   return {
     n = 0, x = {}, y = {}, w = {}, h = {}, oneway = {}, other = {}, col = {}, row = {},
-    id = {},
+    id = {}, response = {}, record = {}, key = {},
     touch = {}, normal = {}, touch_n = 0,
   }
 end
@@ -66,7 +69,8 @@ end
 ---@field cross_end number and its high one
 ---@field blocks_oneway boolean oneway candidates stop this move (moving down)
 ---@field actor? table the moving box, passed to the filter
----@field filter? fun(actor: table, other: any): any skips what it returns false or nil for
+---@field filter? fun(actor: table, other: any, col?: integer, row?: integer, id?: any): any
+---the moving actor's filter (gathering reads it)
 ---@field best? number output: the nearest stop found so far
 ---@field touch budge.HashRecord[] output: the hashed records that stop the box at best
 ---@field touched integer output: how many of touch are valid
@@ -211,6 +215,33 @@ local function interval_times(pos, size, delta, other, other_size)
     return -HUGE, HUGE
   end
   return nil, nil
+end
+
+---When the box (x, y, w, h) moving by (dx, dy), 0 <= t <= 1, first overlaps the box (bx,
+---by, bw, bh) strictly: the fraction t (0 when it overlaps at the start) and the axis it
+---came in across (1 for x, 2 for y, also for both at once; 0 when it overlapped at the
+---start), or nil when it never does.
+---@param x number
+---@param y number
+---@param w number
+---@param h number
+---@param dx number
+---@param dy number
+---@param bx number
+---@param by number
+---@param bw number
+---@param bh number
+---@return number? t, integer? axis
+function sweep.box_enter(x, y, w, h, dx, dy, bx, by, bw, bh)
+  local enter_x, exit_x = interval_times(x, w, dx, bx, bw)
+  if enter_x == nil then return nil, nil end
+  local enter_y, exit_y = interval_times(y, h, dy, by, bh)
+  if enter_y == nil then return nil, nil end
+  local enter = enter_x > enter_y and enter_x or enter_y
+  local exit = exit_x < exit_y and exit_x or exit_y
+  if enter >= exit or enter >= 1 or exit <= 0 then return nil, nil end
+  if enter < 0 then return 0, 0 end
+  return enter, enter_x > enter_y and 1 or 2
 end
 
 ---Time of impact in [0, 1) of the box (x, y, w, h) moving (dx, dy) against the set, or

@@ -198,8 +198,9 @@ end
 ---@param is_solid? fun(id: any): boolean
 ---@param is_oneway? fun(id: any): boolean
 ---@param kinds integer[] filled in place
+---@param ids? any[] filled in place with each non-empty tile's id (a filter is given it)
 ---@return integer[] kinds
-function tilegrid.read(source, data, cols, rows, is_solid, is_oneway, kinds)
+function tilegrid.read(source, data, cols, rows, is_solid, is_oneway, kinds, ids)
   for row = 1, rows do
     local line = data == nil and source[row] or nil
     local base = (row - 1) * cols
@@ -215,6 +216,7 @@ function tilegrid.read(source, data, cols, rows, is_solid, is_oneway, kinds)
         kind = SOLID
       end
       kinds[base + col] = kind
+      if ids then ids[base + col] = kind ~= EMPTY and id or nil end
     end
   end
   return kinds

@@ -1,8 +1,9 @@
 -- budge.world: the World class. Solids never move by themselves and never collide;
--- actors move with world:move and collide with solids and solid tiles only (not with
--- each other); tile layers are read by index. Each public method checks its arguments
--- and then delegates: solids.lua and actors.lua keep the items, move.lua moves actors,
--- carry.lua moves solids, query.lua answers queries.
+-- actors move with world:move and stop against solids and solid tiles (and against other
+-- actors when a filter asks); sensors never block and are reported when crossed; tile
+-- layers are read by index. Each public method checks its arguments and then delegates:
+-- solids.lua and actors.lua keep the items, move.lua moves actors, carry.lua moves
+-- solids, query.lua answers queries, contacts.lua finds frame contacts.
 --
 -- A move allocates nothing once the world is warm: candidates go into a reused struct
 -- of arrays, contacts into reused records, and nothing iterates with pairs(). Every
@@ -22,14 +23,16 @@ local move = require(here .. ".move")
 local carry = require(here .. ".carry")
 local query = require(here .. ".query")
 local entry = require(here .. ".entry")
+local contacts = require(here .. ".contacts")
 
 local check_box, check_wall_type, check_number = box.check_box, box.check_wall_type,
   box.check_number
 local describe, is_finite = box.describe, box.is_finite
 local METHOD, NAME_LIST = move.BY_NAME, move.NAME_LIST
-local format, error, type = string.format, error, type
+local format, error, type, pcall = string.format, error, type, pcall
 
-local SOLID, ACTOR, TILES = entry.SOLID, entry.ACTOR, entry.TILES
+local SOLID, ACTOR, TILES, SENSOR = entry.SOLID, entry.ACTOR, entry.TILES, entry.SENSOR
+local A_KIND = entry.A_KIND
 local enter, guarded, check_span, check_out = entry.enter, entry.guarded, entry.check_span,
   entry.check_out
 local find_record, refuse_duplicate, abandon_move = entry.find_record, entry.refuse_duplicate,
@@ -47,16 +50,24 @@ local world = {}
 ---What the world keeps for each item: one per solid, actor and tile layer.
 ---@class budge.Record : budge.HashRecord
 ---@field item table the user's box, or the tile layer handle
----@field kind "solid"|"actor"|"tiles"
+---@field kind "solid"|"actor"|"sensor"|"tiles"
 ---@field id integer the order it was added (the last tie-breaker everywhere)
 ---@field oneway boolean a solid with wall_type "oneway"
----@field index? integer an actor's place in the actor list
+---@field index? integer an actor's place in the actor list (a sensor's in the sensor list)
 ---@field dirty? boolean an actor moved since its cells were last brought up to date
 ---@field ride_stamp? integer the move_solid that found this actor riding
 ---@field crush_stamp? integer the move_solid that crushed it
 ---@field package _t? number scratch of query_segment: where the segment enters it
 ---@field removed? boolean taken out of the world (while a callback ran: not met again)
 ---@field package _in_hash? boolean a solid's record is in the solid hash
+---@field package _cross_stamp? integer the last move that reported crossing it
+---@field package _fx? number an actor's or sensor's box when the frame began (world:contacts)
+---@field package _fy? number
+---@field package _sx0? number scratch of world:contacts: the box swept in the frame
+---@field package _sy0? number
+---@field package _sx1? number
+---@field package _sy1? number
+---@field package _frame_in? integer the contacts call that last saw it in the world
 
 ---A world of solids, actors and tile layers. Made by budge.new_world.
 ---@class budge.World
@@ -71,13 +82,21 @@ local world = {}
 ---@field package _box_bounds budge.Bounds of the hashed solid boxes ever added
 ---@field package _actors budge.Hash the actors, brought up to date lazily
 ---@field package _actor_list budge.Record[] the actors' records, in the world's actor order
+---@field package _sensors budge.Hash the sensors
+---@field package _sensor_list budge.Record[] the sensors' records (added order, a removal
+---moving the last one into the gap)
+---@field package _sensor_count integer how many sensors
 ---@field package _dirty budge.Record[] actors moved since the last rehash
 ---@field package _n_dirty integer
 ---@field package _hits budge.Hit[] the last move's contacts (reused)
 ---@field package _n_hits integer
+---@field package _check_hits budge.Hit[] the last check's contacts (swapped in while it runs)
 ---@field package _round integer the phase of the move now recording contacts
+---@field package _move_stamp integer counts moves (what a move crossed carries its stamp)
 ---@field package _probe budge.AxisProbe the axis scans' scratch
 ---@field package _set budge.CandidateSet the candidates of one move
+---@field package _cross budge.CandidateSet what it only crosses
+---@field package _crossed integer[] scratch of a filtered axis phase: indices into _set
 ---@field package _candidate_before fun(i: integer, j: integer): boolean orders _set
 ---@field package _order integer[] indices into _set, sorted by the discrete methods
 ---@field package _scratch budge.Box stands for a tile in the discrete methods
@@ -95,6 +114,13 @@ local world = {}
 ---@field package _n_pending integer
 ---@field package _pending_actors integer how many of them are actors
 ---@field package _pending_layers integer and tile layers
+---@field package _pending_sensors integer and sensors
+---@field package _frame_order budge.Record[] actors and sensors, by the left of their frame's sweep
+---@field package _frame_lists budge.Record[][] the actor list and the sensor list
+---@field package _frame_stamp integer counts world:contacts calls
+---@field package _contact_pool budge.Contact[] the frame contacts (reused)
+---@field package _contact_sorted budge.Contact[] scratch: the pool's first n, sorted
+---@field package _n_contacts integer
 local World = {}
 World.__index = World
 
@@ -121,15 +147,16 @@ function world.new_world(opts)
   local set = sweep.new_set()
   local range = cell_size * RANGE_CELLS
   if range > RANGE_MAX then range = RANGE_MAX end
-  return setmetatable({
+  local self = setmetatable({
     cell_size = cell_size, range = range,
     _records = {}, _next_id = 0,
     _solids = hash.new(cell_size), _solid_count = 0, _layers = {},
     _bounds = solids.new_bounds(), _box_bounds = solids.new_bounds(),
     _actors = hash.new(cell_size), _actor_list = {}, _dirty = {}, _n_dirty = 0,
-    _hits = {}, _n_hits = 0, _round = 1,
+    _sensors = hash.new(cell_size), _sensor_list = {}, _sensor_count = 0,
+    _hits = {}, _n_hits = 0, _check_hits = {}, _round = 0, _move_stamp = 0,
     _probe = sweep.new_probe(),
-    _set = set, _candidate_before = move.candidate_order(set), _order = {},
+    _set = set, _cross = sweep.new_set(), _crossed = {}, _candidate_before = move.candidate_order(set), _order = {},
     _scratch = {x = 0, y = 0, width = 0, height = 0},
     _tall = {x = 0, y = 0, width = 0, height = 0, wall_type = "horizontal"},
     _wide = {x = 0, y = 0, width = 0, height = 0, wall_type = "vertical"},
@@ -137,7 +164,12 @@ function world.new_world(opts)
     _near = {}, _crushed = {}, _n_crushed = 0, _crush_stamp = 0,
     _crush_lists = {}, _crush_depth = 0,
     _busy = false, _pending = {}, _n_pending = 0, _pending_actors = 0, _pending_layers = 0,
+    _pending_sensors = 0,
+    _frame_order = {}, _frame_lists = false, _frame_stamp = 0, _contact_pool = {},
+    _contact_sorted = {}, _n_contacts = 0,
   }, World)
+  self._frame_lists = {self._actor_list, self._sensor_list}
+  return self
 end
 
 local function new_record(self, item, kind)
@@ -163,8 +195,11 @@ function World:add_solid(solid)
   return solid
 end
 
----Adds an actor box: it moves with world:move and stops against solids. An optional
----`actor.filter(actor, other)` returning false lets it pass through `other`.
+---Adds an actor box: it moves with world:move and stops against solids and solid tiles,
+---and crosses sensors. An optional `actor.filter(actor, other, col, row, id)` chooses
+---the response to each thing it meets (README.md, "Responses"): "slide" (or true),
+---"touch", "bounce", "cross", or false/nil to ignore it; with a filter, other actors are
+---met too.
 ---@param actor budge.Box
 ---@return budge.Box actor
 function World:add_actor(actor)
@@ -174,6 +209,22 @@ function World:add_actor(actor)
   check_box_span(self, actor, "box")
   actors.insert(self, new_record(self, actor, ACTOR))
   return actor
+end
+
+---Adds a sensor box: a zone that never blocks anything (a coin, spikes, water, a
+---checkpoint). An actor's move reports the sensors its path crosses as "cross" hits
+---(unless its filter returns false or nil for one), and world:contacts reports actors
+---meeting it. Move it by changing its box and calling world:update(sensor).
+---@param sensor budge.Box
+---@return budge.Box sensor
+function World:add_sensor(sensor)
+  enter(self, "add_sensor")
+  refuse_duplicate(self, sensor, "box")
+  check_box(sensor, "box", 2)
+  check_box_span(self, sensor, "box")
+  actors.insert(self, new_record(self, sensor, SENSOR))
+  self._sensor_count = self._sensor_count + 1
+  return sensor
 end
 
 ---Adds a tile layer: `grid[row][col]` is a tile id (a flat array with `opts.width`
@@ -209,27 +260,30 @@ function World:remove(item)
   local record = find_record(self, item, 2)
   self._records[item] = nil
   record.removed = true
-  if record.kind == SOLID then self._solid_count = self._solid_count - 1 end
+  local kind = record.kind
+  if kind == SOLID then self._solid_count = self._solid_count - 1
+  elseif kind == SENSOR then self._sensor_count = self._sensor_count - 1 end
   if self._busy then -- a move is walking the structures: take it out when it is done
     local n = self._n_pending + 1
     self._pending[n] = record
     self._n_pending = n
-    if record.kind == ACTOR then self._pending_actors = self._pending_actors + 1
-    elseif record.kind == TILES then self._pending_layers = self._pending_layers + 1 end
+    if kind == ACTOR then self._pending_actors = self._pending_actors + 1
+    elseif kind == TILES then self._pending_layers = self._pending_layers + 1
+    elseif kind == SENSOR then self._pending_sensors = self._pending_sensors + 1 end
     return
   end
-  local kind = record.kind
   if kind == SOLID then
     solids.unhash(self, record)
-  elseif kind == ACTOR then
-    actors.remove(self, record)
-  else
+  elseif kind == TILES then
     solids.remove_layer(self, item)
+  else
+    actors.remove(self, record)
   end
 end
 
 ---Tells the world that a box's position, size or wall_type changed outside world:move
----(a teleport), or that a tile layer's grid changed.
+---(a teleport: an actor's or sensor's frame for world:contacts starts here), or that a
+---tile layer's grid changed.
 ---@param item table a box or a tile layer handle of this world
 function World:update(item)
   enter(self, "update")
@@ -241,10 +295,11 @@ function World:update(item)
     check_box_span(self, item, "box")
     solids.unhash(self, record)
     solids.hash(self, record)
-  elseif kind == ACTOR then
+  elseif kind == ACTOR or kind == SENSOR then
     check_box(item, "box", 2)
     check_box_span(self, item, "box")
     actors.rehash_one(self, record)
+    record._fx, record._fy = record.x, record.y
   else
     check_number(item.x, "layer.x", 2)
     check_number(item.y, "layer.y", 2)
@@ -263,16 +318,72 @@ function World:has(item)
   return self._records[item] ~= nil
 end
 
----Counts of the world's items: solids, actors, tile layers.
----@return integer solids, integer actors, integer layers
+---Counts of the world's items: solids, actors, tile layers, sensors.
+---@return integer solids, integer actors, integer layers, integer sensors
 function World:count()
   check_self(self, "count", 3)
   return self._solid_count, #self._actor_list - self._pending_actors,
-    #self._layers - self._pending_layers
+    #self._layers - self._pending_layers, self._sensor_count
 end
 
----Moves `actor` by (dx, dy) against the world's solids and tiles, writes its new
----position into it and returns it, with the contacts of this move.
+-- A query's width or height: finite and >= 0 (errors at the caller of the query).
+local function check_size(value, name)
+  if not is_finite(value) or value < 0 then
+    error(format("%s must be a finite number >= 0, got %s", name, describe(value)), 3)
+  end
+end
+
+-- The checks world:move and world:check make (errors at their caller): the actor's
+-- record, the method's entry and the filter.
+local function check_move(self, actor, dx, dy, method)
+  local record = self._records[actor]
+  if record == nil or record.kind ~= ACTOR then
+    if record then
+      error(format("actor must be an actor of this world, got %s", record.kind == SOLID
+        and "a solid (world:move_solid moves solids)" or A_KIND[record.kind] .. " (world:move "
+        .. "moves actors only)"), 3)
+    end
+    error(format("actor must be an actor of this world (add it with world:add_actor), got %s",
+      describe(actor)), 3)
+  end
+  check_box(actor, "actor", 3)
+  check_number(dx, "dx", 3)
+  check_number(dy, "dy", 3)
+  local range, to_x, to_y = self.range, actor.x + dx, actor.y + dy
+  if to_x < -range or to_x + actor.width > range or to_y < -range
+    or to_y + actor.height > range then -- (tested inline: this entry is hot)
+    check_span(self, to_x, actor.width, "dx", "the actor", 4)
+    check_span(self, to_y, actor.height, "dy", "the actor", 4)
+  end
+  local method_entry = METHOD[method == nil and "axis_sweep" or method]
+  if method_entry == nil then
+    error(format("method must be %s, got %s", NAME_LIST, describe(method)), 3)
+  end
+  local filter = actor.filter
+  if filter ~= nil and type(filter) ~= "function" then
+    error(format("actor.filter must be a function or nil, got %s", describe(filter)), 3)
+  end
+  return record, method_entry, filter
+end
+
+-- The move itself, its hits sorted; a filter's bad return value is an error `level`
+-- levels up from here.
+local function run_move(self, actor, dx, dy, filter, method_entry, level)
+  self._n_hits, self._round = 0, 0
+  self._move_stamp = self._move_stamp + 1
+  if filter == nil then -- no callback can run: nothing to guard
+    method_entry.move(self, actor, dx, dy, nil, method_entry)
+  else
+    guarded(self, "an actor's filter", level, method_entry.move, abandon_move, actor, dx, dy,
+      filter, method_entry)
+  end
+  hits.sort(self)
+end
+
+---Moves `actor` by (dx, dy) against the world's solids and tiles (and, as its filter
+---chooses, other actors), writes its new position into it and returns it, with the
+---contacts of this move in the order they happened: what stopped it, and what it
+---crossed (sensors, and whatever its filter answered "cross" for).
 ---@param actor budge.Box an actor of this world
 ---@param dx number
 ---@param dy number
@@ -280,45 +391,33 @@ end
 ---@return number x, number y, integer n, budge.Hit[] hits owned by the world, valid until the next move
 function World:move(actor, dx, dy, method)
   if self._busy ~= false then enter(self, "move") end -- (one field read: this is hot)
-  local record = self._records[actor]
-  if record == nil or record.kind ~= ACTOR then
-    if record then
-      error(format("actor must be an actor of this world, got %s", record.kind == SOLID
-        and "a solid (world:move_solid moves solids)" or "a tile layer (world:move moves "
-        .. "actors only)"), 2)
-    end
-    error(format("actor must be an actor of this world (add it with world:add_actor), got %s",
-      describe(actor)), 2)
-  end
-  check_box(actor, "actor", 2)
-  check_number(dx, "dx", 2)
-  check_number(dy, "dy", 2)
-  local range, to_x, to_y = self.range, actor.x + dx, actor.y + dy
-  if to_x < -range or to_x + actor.width > range or to_y < -range
-    or to_y + actor.height > range then -- (tested inline: this entry is hot)
-    check_span(self, to_x, actor.width, "dx", "the actor")
-    check_span(self, to_y, actor.height, "dy", "the actor")
-  end
-  local method_entry = METHOD[method == nil and "axis_sweep" or method]
-  if method_entry == nil then
-    error(format("method must be %s, got %s", NAME_LIST, describe(method)), 2)
-  end
-  local filter = actor.filter
-  if filter ~= nil and type(filter) ~= "function" then
-    error(format("actor.filter must be a function or nil, got %s", describe(filter)), 2)
-  end
-  self._n_hits = 0
-  if filter == nil then -- no callback can run: nothing to guard
-    method_entry.move(self, actor, dx, dy, nil, method_entry)
-  else
-    guarded(self, "an actor's filter", method_entry.move, abandon_move, actor, dx, dy, filter,
-      method_entry)
-  end
+  local record, method_entry, filter = check_move(self, actor, dx, dy, method)
+  run_move(self, actor, dx, dy, filter, method_entry, 3)
   record.x, record.y, record.width, record.height = actor.x, actor.y, actor.width,
     actor.height
   if not record.dirty then actors.moved(self, record) end
-  hits.sort(self)
   return actor.x, actor.y, self._n_hits, self._hits
+end
+
+---What world:move(actor, dx, dy, method) would return, without moving anything: the
+---actor, the world and the next move's result are as they were. Its hits are records of
+---their own (valid until the next check), so the last move's hits stay valid.
+---@param actor budge.Box an actor of this world
+---@param dx number
+---@param dy number
+---@param method? "axis_sweep"|"swept"|"auto"|"seed"|"wall_type"|"min_axis"|"fat_cross"
+---@return number x, number y, integer n, budge.Hit[] hits owned by the world, valid until the next check
+function World:check(actor, dx, dy, method)
+  enter(self, "check")
+  local _, method_entry, filter = check_move(self, actor, dx, dy, method)
+  local x, y, n_move = actor.x, actor.y, self._n_hits
+  self._hits, self._check_hits = self._check_hits, self._hits
+  local ok, err = pcall(run_move, self, actor, dx, dy, filter, method_entry, 4)
+  local to_x, to_y, n, list = actor.x, actor.y, self._n_hits, self._hits
+  actor.x, actor.y = x, y
+  self._hits, self._check_hits, self._n_hits = self._check_hits, list, n_move
+  if not ok then error(err, 0) end
+  return to_x, to_y, n, list
 end
 
 ---Moves a solid by (dx, dy), never blocked: it pushes actors in its way by exactly the
@@ -348,57 +447,77 @@ function World:move_solid(solid, dx, dy)
   return carry.run(self, record, dx, dy)
 end
 
----Every solid, actor and tile layer (once, when any of its solid tiles does) that
----strictly contains the point, in the order they were added. Points on an edge are
----outside, as touching boxes do not collide.
+-- A query's last argument: a function or nil.
+local function check_filter(filter)
+  if filter ~= nil and type(filter) ~= "function" then
+    error(format("filter must be a function or nil, got %s", describe(filter)), 3)
+  end
+end
+
+-- The results of a query into `out` (and `out_t`), the filter's refusals left out; the
+-- filter runs under the callback guard.
+local function finish(self, n, out, filter, out_t)
+  if filter == nil then return query.finish(self, n, out, nil, out_t) end
+  return guarded(self, "a query's filter", 3, query.finish, query.abandon, n, out, filter,
+    out_t)
+end
+
+---Every solid, actor, sensor and tile layer (once, when any of its solid tiles does)
+---that strictly contains the point, in the order they were added, less those
+---`filter(item)` returns false or nil for. Points on an edge are outside, as touching
+---boxes do not collide.
 ---@param x number
 ---@param y number
 ---@param out? table reused for the result
+---@param filter? fun(item: any): any
 ---@return table out, integer n
-function World:query_point(x, y, out)
+function World:query_point(x, y, out, filter)
   enter(self, "query_point")
   check_number(x, "x", 2)
   check_number(y, "y", 2)
   check_span(self, x, 0, "x", "the point")
   check_span(self, y, 0, "y", "the point")
-  return query.area(self, x, y, 0, 0, check_out(out, "out"))
+  out = check_out(out, "out")
+  check_filter(filter)
+  return out, finish(self, query.area(self, x, y, 0, 0), out, filter, nil)
 end
 
----Every solid, actor and tile layer overlapping the rectangle (strictly), in the order
----they were added.
+---Every solid, actor, sensor and tile layer overlapping the rectangle (strictly), in the
+---order they were added, less those `filter(item)` returns false or nil for.
 ---@param x number
 ---@param y number
 ---@param width number >= 0
 ---@param height number >= 0
 ---@param out? table reused for the result
+---@param filter? fun(item: any): any
 ---@return table out, integer n
-function World:query_rect(x, y, width, height, out)
+function World:query_rect(x, y, width, height, out, filter)
   enter(self, "query_rect")
   check_number(x, "x", 2)
   check_number(y, "y", 2)
-  if not is_finite(width) or width < 0 then
-    error(format("width must be a finite number >= 0, got %s", describe(width)), 2)
-  end
-  if not is_finite(height) or height < 0 then
-    error(format("height must be a finite number >= 0, got %s", describe(height)), 2)
-  end
+  check_size(width, "width")
+  check_size(height, "height")
   check_span(self, x, width, "x", "the rectangle")
   check_span(self, y, height, "y", "the rectangle")
-  return query.area(self, x, y, width, height, check_out(out, "out"))
+  out = check_out(out, "out")
+  check_filter(filter)
+  return out, finish(self, query.area(self, x, y, width, height), out, filter, nil)
 end
 
----Every solid, actor and tile layer the segment passes through (strictly inside), sorted
----by distance along it (then by the order they were added). `out_t[i]` is the fraction
----of the segment where it enters `out[i]` (0 when it starts inside), so the entry point
----is x1 + (x2 - x1) * t, y1 + (y2 - y1) * t. For a tile layer, the first solid tile met.
+---Every solid, actor, sensor and tile layer the segment passes through (strictly
+---inside), sorted by distance along it (then by the order they were added), less those
+---`filter(item)` returns false or nil for. `out_t[i]` is the fraction of the segment
+---where it enters `out[i]` (0 when it starts inside), so the entry point is
+---x1 + (x2 - x1) * t, y1 + (y2 - y1) * t. For a tile layer, the first solid tile met.
 ---@param x1 number
 ---@param y1 number
 ---@param x2 number
 ---@param y2 number
 ---@param out? table reused for the result
 ---@param out_t? number[] reused for the entry fractions
+---@param filter? fun(item: any): any
 ---@return table out, integer n, number[] out_t
-function World:query_segment(x1, y1, x2, y2, out, out_t)
+function World:query_segment(x1, y1, x2, y2, out, out_t, filter)
   enter(self, "query_segment")
   check_number(x1, "x1", 2)
   check_number(y1, "y1", 2)
@@ -410,7 +529,79 @@ function World:query_segment(x1, y1, x2, y2, out, out_t)
   check_span(self, y2, 0, "y2", "the segment")
   out = check_out(out, "out")
   out_t = check_out(out_t, "out_t")
-  return query.segment(self, x1, y1, x2, y2, out, out_t)
+  check_filter(filter)
+  local n = finish(self, query.sweep(self, x1, y1, x2, y2, 0, 0), out, filter, out_t)
+  return out, n, out_t
+end
+
+---Every solid, actor, sensor and tile layer that a box at (x, y) of (width, height)
+---would overlap (strictly) moving in a straight line by (dx, dy), nearest first (then
+---in the order they were added), less those `filter(item)` returns false or nil for:
+---nothing stops it, nothing moves. For a box not in the world: a ledge probe, "can I
+---stand up here", a thrown object's path. `out_t[i]` is the fraction of the motion at
+---which the box enters `out[i]` (0 when it overlaps it at the start). For a tile layer,
+---the first solid tile met.
+---@param x number
+---@param y number
+---@param width number >= 0
+---@param height number >= 0
+---@param dx number
+---@param dy number
+---@param out? table reused for the result
+---@param out_t? number[] reused for the entry fractions
+---@param filter? fun(item: any): any
+---@return table out, integer n, number[] out_t
+function World:query_sweep(x, y, width, height, dx, dy, out, out_t, filter)
+  enter(self, "query_sweep")
+  check_number(x, "x", 2)
+  check_number(y, "y", 2)
+  check_size(width, "width")
+  check_size(height, "height")
+  check_number(dx, "dx", 2)
+  check_number(dy, "dy", 2)
+  check_span(self, x, width, "x", "the box")
+  check_span(self, y, height, "y", "the box")
+  check_span(self, x + dx, width, "dx", "the box")
+  check_span(self, y + dy, height, "dy", "the box")
+  out = check_out(out, "out")
+  out_t = check_out(out_t, "out_t")
+  check_filter(filter)
+  local n = finish(self, query.sweep(self, x, y, x + dx, y + dy, width, height), out, filter,
+    out_t)
+  return out, n, out_t
+end
+
+-- What an error a filter raised during world:contacts leaves: no contacts, the frame
+-- not begun again.
+local function abandon_contacts(self)
+  self._n_contacts = 0
+end
+
+---Every pair of things that touched during the frame, from both motions: each actor's
+---and sensor's box moves in a straight line from where it was at the previous call (or
+---where it was added, or where world:update put it) to where it is now, and a pair is
+---reported when the two boxes overlap strictly at some moment of that, whichever order
+---the game moved them in. A pair is reported when either actor's filter returns "cross"
+---for the other, or for an actor and a sensor unless the actor's filter returns false
+---or nil for it (every sensor, with no filter). Records (owned by the world, valid until
+---the next call) come sorted by `t`, then by the order `item` and `other` were added.
+---The call starts the next frame where everything is now.
+---@param out? table reused for the result
+---@return table out, integer n
+function World:contacts(out)
+  enter(self, "contacts")
+  out = check_out(out, "out")
+  local list = self._actor_list
+  for i = 1, #list do
+    local filter = list[i].item.filter
+    if filter ~= nil and type(filter) ~= "function" then
+      error(format("actor.filter must be a function or nil, got %s for %s", describe(filter),
+        describe(list[i].item)), 2)
+    end
+  end
+  guarded(self, "an actor's filter (during world:contacts)", 2, contacts.find,
+    abandon_contacts)
+  return contacts.finish(self, out)
 end
 
 return world
