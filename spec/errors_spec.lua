@@ -9,6 +9,9 @@ local box = require("fixtures.box")
 local world = budge.new_world()
 local actor = world:add_actor(box(0, 0, 4, 4))
 local solid = world:add_solid(box(50, 0, 4, 4))
+local sensor = world:add_sensor(box(0, 40, 4, 4))
+local picky = world:add_actor(box(40, 0, 4, 4))
+picky.filter = function() return "bogus" end
 local CASES = {
   {"detect_collision", function() local _ = budge.detect_collision(box(0, 0, 1, 1), nil) end},
   {"resolve_collision", function() local _ = budge.resolve_collision(box(0, 0, 1, 1), box(0, 0, 1, 1), "x") end},
@@ -27,6 +30,13 @@ local CASES = {
   {"query_point", function() local _ = world:query_point(nil, 0) end},
   {"query_rect", function() local _ = world:query_rect(0, 0, -1, 1) end},
   {"query_segment", function() local _ = world:query_segment(0, 0, 1, 0 / 0) end},
+  {"query_sweep", function() local _ = world:query_sweep(0, 0, 1, 1, 1, 0 / 0) end},
+  {"query filter", function() local _ = world:query_rect(0, 0, 1, 1, {}, "self") end},
+  {"add_sensor", function() local _ = world:add_sensor(sensor) end},
+  {"check", function() local _ = world:check(actor, 1, 0, "fastest") end},
+  {"contacts", function() local _ = world:contacts(7) end},
+  {"filter response", function() local _ = world:move(picky, 20, 0) end},
+  {"check response", function() local _ = world:check(picky, 20, 0) end},
   {"tiles.merge", function() local _ = budge.tiles.merge({1, 1}, 16, 16) end},
   {"tiles.merge ragged", function() local _ = budge.tiles.merge({{1}, {}}, 16, 16) end},
   {"advise", function() local _ = budge.advise({solids = {}, movers = {{width = 1}}}) end},
@@ -46,6 +56,7 @@ describe("errors from every public entry", function()
   it("changes nothing in the world when it refuses", function()
     assert.are.same({0, 0}, {actor.x, actor.y})
     assert.are.same({50, 0}, {solid.x, solid.y})
-    assert.are.same({1, 1, 0, 0}, {world:count()})
+    assert.are.same({40, 0}, {picky.x, picky.y})
+    assert.are.same({1, 2, 0, 1}, {world:count()})
   end)
 end)

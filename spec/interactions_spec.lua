@@ -1,0 +1,687 @@
+-- What a game's moving things touch: filter responses, hit records, sensors, actors that
+-- meet actors, frame contacts, dry runs and swept queries. Oracles where one exists:
+-- brute force over the two straight motions, the same move without a filter, a world
+-- without the dry runs, exact reflections of dyadic speeds.
+local budge = require("budge")
+local box = require("fixtures.box")
+local garbage = require("fixtures.garbage")
+local random_source = require("fixtures.random")
+
+local function trace(x, y, n, hits)
+  local parts = {string.format("%.17g %.17g %d", x, y, n)}
+  for i = 1, n do
+    local hit = hits[i]
+    parts[#parts + 1] = string.format("%s/%s/%s/%s/%s/%.17g/%d/%d", tostring(hit.other.name or
+      hit.other.x), tostring(hit.side), tostring(hit.col), tostring(hit.row), hit.response,
+      hit.t, hit.nx, hit.ny)
+  end
+  return table.concat(parts, " ")
+end
+
+local function always(response) return function() return response end end
+local function xy(x, y) return {x, y} end
+
+describe("responses", function()
+  it("slide (and true) is exactly the move without a filter, in 3000 random scenes", function()
+    local rng = random_source.new(20261201)
+    local checked = 0
+    for _ = 1, 3000 do
+      local grid = {}
+      for r = 1, 12 do
+        grid[r] = {}
+        for c = 1, 12 do grid[r][c] = rng(1, 4) == 1 and rng(1, 5) or 0 end
+      end
+      local boxes = {}
+      for i = 1, 6 do
+        boxes[i] = {x = rng(0, 180), y = rng(0, 180), width = rng(1, 40),
+          height = rng(1, 40), wall_type = rng(1, 5) == 1 and "oneway" or nil}
+      end
+      local ax, ay = rng(0, 720) / 4, rng(0, 720) / 4
+      local aw, ah = rng(1, 20), rng(1, 20)
+      local dx, dy = rng(-400, 400) / 4, rng(-400, 400) / 4
+      local results, clear = {}, true
+      for k = 1, 3 do
+        local world = budge.new_world({cell_size = 32})
+        world:add_tiles(grid, 16, 16, {is_oneway = function(id) return id == 5 end})
+        for i = 1, #boxes do
+          local b = boxes[i]
+          world:add_solid({x = b.x, y = b.y, width = b.width, height = b.height,
+            wall_type = b.wall_type})
+        end
+        if select(2, world:query_rect(ax, ay, aw, ah)) > 0 then clear = false end
+        local actor = world:add_actor(box(ax, ay, aw, ah))
+        if k == 2 then actor.filter = always("slide") elseif k == 3 then actor.filter = always(true) end
+        results[k] = trace(world:move(actor, dx, dy))
+      end
+      -- (an actor that starts inside tiles lists, with a filter, every tile that holds it
+      -- where it is; without one, the first line of them: README, "Responses")
+      if clear then
+        checked = checked + 1
+        assert.are.equal(results[1], results[2])
+        assert.are.equal(results[1], results[3])
+      end
+    end
+    assert.is_true(checked > 1000, "checked " .. checked)
+  end)
+
+  it("touch ends the whole move at the contact", function()
+    local world = budge.new_world()
+    local wall = world:add_solid(box(20, -100, 10, 200))
+    local actor = world:add_actor(box(0, 0, 10, 10))
+    actor.filter = always("touch")
+    local x, y, n, hits = world:move(actor, 20, 30)
+    assert.are.same({10, 0, 1}, {x, y, n})
+    assert.are.same({wall, "right", "touch", 10 / 50, -1, 0},
+      {hits[1].other, hits[1].side, hits[1].response, hits[1].t, hits[1].nx, hits[1].ny})
+    actor.filter = always("slide")
+    world:update(actor)
+    assert.are.same({10, 30}, xy(world:move(actor, 20, 30)))
+  end)
+
+  it("bounce reflects what is left of the move off the face, exactly", function()
+    local world = budge.new_world()
+    world:add_solid(box(20, -100, 10, 200))
+    local floor = world:add_solid(box(-100, 20, 300, 10))
+    local actor = world:add_actor(box(0, 0, 10, 10))
+    actor.filter = always("bounce")
+    local x, y, n, hits = world:move(actor, 16, 14)
+    -- x: 10 px to the wall, 6 back; y: 10 px to the floor, 4 back
+    assert.are.same({4, 6, 2}, {x, y, n})
+    assert.are.same({"right", -1, 0, 10 / 30}, {hits[1].side, hits[1].nx, hits[1].ny, hits[1].t})
+    assert.are.same({floor, "floor", 0, -1, (16 + 10) / 30},
+      {hits[2].other, hits[2].side, hits[2].nx, hits[2].ny, hits[2].t})
+  end)
+
+  it("bounce in the swept method reflects the blocked part of the diagonal", function()
+    local world = budge.new_world()
+    world:add_solid(box(20, -100, 10, 200))
+    local actor = world:add_actor(box(0, 0, 10, 10))
+    actor.filter = always("bounce")
+    local x, y, n, hits = world:move(actor, 20, 8, "swept")
+    assert.are.same({0, 8, 1}, {x, y, n})
+    assert.are.same({"right", "bounce", 0.5}, {hits[1].side, hits[1].response, hits[1].t})
+  end)
+
+  it("cross passes through and reports what was crossed, with its side and t", function()
+    local world = budge.new_world()
+    local glass = world:add_solid(box(20, 0, 10, 10))
+    local wall = world:add_solid(box(60, 0, 10, 10))
+    local actor = world:add_actor(box(0, 0, 10, 10))
+    actor.filter = function(_, other) return other == glass and "cross" or "slide" end
+    for _, method in ipairs({"axis_sweep", "swept"}) do
+      actor.x = 0
+      world:update(actor)
+      local x, _, n, hits = world:move(actor, 100, 0, method)
+      assert.are.same({50, 2}, {x, n}, method)
+      assert.are.same({glass, "right", "cross", 0.1, -1}, {hits[1].other, hits[1].side,
+        hits[1].response, hits[1].t, hits[1].nx}, method)
+      assert.are.same({wall, "slide", 0.5}, {hits[2].other, hits[2].response, hits[2].t}, method)
+    end
+  end)
+
+  it("a tile layer's filter gets col, row and the tile's id: drop through one oneway tile", function()
+    local world = budge.new_world()
+    local grid = {{0, 0, 0, 0}, {7, 7, 0, 0}, {0, 0, 0, 0}, {1, 1, 1, 1}}
+    local tiles = world:add_tiles(grid, 16, 16, {is_oneway = function(id) return id == 7 end})
+    local player = world:add_actor(box(4, 0, 8, 8))
+    local asked = {}
+    local holding_down = false
+    player.filter = function(_, other, col, row, id)
+      asked[#asked + 1] = string.format("%s %s %s %s", other == tiles and "tiles" or "?", col, row, id)
+      if id == 7 and holding_down then return nil end
+      return "slide"
+    end
+    local _, y, n, hits = world:move(player, 0, 40)
+    assert.are.same({8, 1, 1, 2}, {y, n, hits[1].col, hits[1].row})
+    assert.are.same({"tiles 1 2 7"}, asked)
+    holding_down = true
+    asked = {}
+    _, y = world:move(player, 0, 40)
+    assert.are.equal(40, y) -- dropped through onto the floor (its top at 48)
+    assert.are.same({"tiles 1 2 7", "tiles 1 4 1"}, asked)
+  end)
+
+  it("is asked only about what the path meets, nearest first, up to the first stop", function()
+    local world = budge.new_world({cell_size = 16})
+    local near = world:add_solid(box(30, 0, 4, 10))
+    local far = world:add_solid(box(60, 0, 4, 10))
+    world:add_solid(box(40, 40, 4, 4)) -- beside the path: never asked
+    local actor = world:add_actor(box(0, 0, 10, 10))
+    local asked = {}
+    actor.filter = function(_, other)
+      asked[#asked + 1] = other.x
+      return other == near and "cross" or "slide"
+    end
+    world:move(actor, 200, 0)
+    assert.are.same({30, 60}, asked)
+    assert.are.same({50, 0}, {actor.x, actor.y})
+    assert.is_true(world:has(far))
+  end)
+
+  it("refuses any other return value with an error naming it, and moves nothing", function()
+    local world = budge.new_world()
+    world:add_solid(box(20, 0, 10, 10))
+    local actor = world:add_actor(box(0, 0, 10, 10))
+    actor.filter = always("stick")
+    local ok, message = pcall(world.move, world, actor, 30, 0)
+    assert.is_false(ok)
+    assert.are.equal('actor.filter must return "slide" (or true), "touch", "bounce", "cross", '
+      .. 'or false/nil to ignore, got "stick" for a table', message:gsub("^[^:]+:%d+: ", ""))
+    assert.are.same({0, 0}, {actor.x, actor.y})
+    actor.filter = always(1)
+    ok, message = pcall(world.move, world, actor, 30, 0)
+    assert.is_false(ok)
+    assert.truthy(message:find("got 1 for a table", 1, true), message)
+    actor.filter = nil
+    assert.are.same({10, 0}, xy(world:move(actor, 30, 0)))
+  end)
+end)
+
+describe("hit records", function()
+  it("carry the normal of each face, pointing from the other toward the actor", function()
+    local world = budge.new_world()
+    world:add_solid(box(-20, -20, 60, 10)) -- ceiling
+    world:add_solid(box(-20, 30, 60, 10)) -- floor
+    world:add_solid(box(-20, -10, 10, 40)) -- left wall
+    world:add_solid(box(30, -10, 10, 40)) -- right wall
+    local actor = world:add_actor(box(10, 10, 10, 10))
+    local normals = {}
+    for _, move in ipairs({{40, 0}, {-60, 0}, {0, 60}, {0, -60}}) do
+      local _, _, n, hits = world:move(actor, move[1], move[2])
+      assert.are.equal(1, n)
+      normals[#normals + 1] = string.format("%s %d %d", hits[1].side, hits[1].nx, hits[1].ny)
+    end
+    assert.are.same({"right -1 0", "left 1 0", "floor 0 -1", "ceiling 0 1"}, normals)
+  end)
+
+  it("list every thing crossed once, in path order, even at 10^4 px per step", function()
+    local world = budge.new_world()
+    local coins = {}
+    for i = 1, 100 do coins[i] = world:add_sensor(box(i * 97, 3, 4, 4)) end
+    local grid = {}
+    for col = 1, 700 do grid[col] = col % 7 == 0 and 9 or 0 end
+    local water = world:add_tiles(grid, 16, 16, {width = 700, y = 0})
+    local actor = world:add_actor(box(0, 0, 10, 10))
+    actor.filter = function(_, other) if other == water then return "cross" end return "cross" end
+    local _, _, n, hits = world:move(actor, 10000, 0)
+    assert.are.equal(100 + 89, n) -- 100 coins, and columns 7, 14, ... 623 before x = 10010
+    local last, coin = -1, 0
+    for i = 1, n do
+      local hit = hits[i]
+      assert.is_true(hit.t >= last, "in path order")
+      last = hit.t
+      if hit.other ~= water then
+        coin = coin + 1
+        assert.are.equal(coins[coin], hit.other)
+        assert.is_true(math.abs((coin * 97 - 10) / 10000 - hit.t) < 1e-15)
+      else
+        assert.are.equal(0, hit.col % 7)
+      end
+    end
+    assert.are.equal(100, coin)
+  end)
+end)
+
+describe("sensors", function()
+  local function coin_run(speed)
+    local world = budge.new_world()
+    world:add_tiles({{1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1,
+      1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1}}, 16, 16, {y = 32})
+    local coins = {}
+    for i = 1, 20 do coins[i] = world:add_sensor(box(20 + i * 24, 20, 6, 6)) end
+    local player = world:add_actor(box(0, 20, 10, 12))
+    local got = {}
+    for _ = 1, math.ceil(560 / speed) do
+      local _, _, n, hits = world:move(player, speed, 4) -- walking on the floor, pressed down
+      for i = 1, n do
+        if hits[i].response == "cross" then got[#got + 1] = hits[i].other end
+      end
+      for i = 1, n do
+        if hits[i].response == "cross" and world:has(hits[i].other) then world:remove(hits[i].other) end
+      end
+    end
+    return got, coins, world
+  end
+
+  it("a player walking through 20 coins gets each exactly once, in path order", function()
+    for _, speed in ipairs({3, 40}) do
+      local got, coins, world = coin_run(speed)
+      assert.are.same(coins, got, "speed " .. speed)
+      assert.are.same({0, 1, 1, 0}, {world:count()})
+    end
+  end)
+
+  it("are found by queries, counted, moved by update, and refused twice", function()
+    local world = budge.new_world()
+    local coin = world:add_sensor(box(10, 10, 4, 4))
+    assert.are.same({0, 0, 0, 1}, {world:count()})
+    assert.are.same({coin}, (world:query_point(12, 12)))
+    coin.x = 100
+    world:update(coin)
+    assert.are.same({}, (world:query_point(12, 12)))
+    assert.are.same({coin}, (world:query_rect(90, 0, 20, 20)))
+    local ok, message = pcall(world.add_sensor, world, coin)
+    assert.is_false(ok)
+    assert.truthy(message:find("box is already in this world (as a sensor)", 1, true), message)
+    local actor = world:add_actor(box(0, 10, 4, 4))
+    local _, _, n, hits = world:move(actor, 200, 0)
+    assert.are.same({1, coin, "cross", 96 / 200}, {n, hits[1].other, hits[1].response, hits[1].t})
+    actor.filter = function() return false end
+    actor.x = 0
+    world:update(actor)
+    local x, y
+    x, y, n = world:move(actor, 200, 0)
+    assert.are.same({200, 10, 0}, {x, y, n})
+    world:remove(coin)
+    assert.are.same({0, 1, 0, 0}, {world:count()})
+  end)
+
+  it("never block, and never stop a moving solid's push", function()
+    local world = budge.new_world()
+    world:add_sensor(box(0, 0, 100, 100))
+    local platform = world:add_solid(box(0, 50, 40, 10))
+    local rider = world:add_actor(box(10, 40, 10, 10))
+    world:move_solid(platform, 30, -20)
+    assert.are.same({40, 20}, {rider.x, rider.y})
+  end)
+end)
+
+describe("actors that meet actors", function()
+  it("ignore each other with no filter, and block where the other stands with one", function()
+    local world = budge.new_world()
+    local enemy = world:add_actor(box(30, 0, 10, 10))
+    local player = world:add_actor(box(0, 0, 10, 10))
+    assert.are.same({60, 0}, xy(world:move(player, 60, 0)))
+    player.x = 0
+    world:update(player)
+    player.filter = function(_, other) if other == enemy then return "slide" end return "slide" end
+    local x, _, n, hits = world:move(player, 60, 0)
+    assert.are.same({20, 1, enemy, "right"}, {x, n, hits[1].other, hits[1].side})
+  end)
+
+  it("200 enemies that block each other in a closed room never overlap, in either order, "
+    .. "and rerun bit for bit", function()
+    local function run(reverse, frames, snapshot_at)
+      local world = budge.new_world({cell_size = 32})
+      world:add_solid(box(-10, -10, 420, 10))
+      world:add_solid(box(-10, 400, 420, 10))
+      world:add_solid(box(-10, 0, 10, 400))
+      world:add_solid(box(400, 0, 10, 400))
+      local rng = random_source.new(7)
+      local enemies = {}
+      local function filter(_, other) return other.enemy and "bounce" or "slide" end
+      for row = 0, 9 do
+        for col = 0, 19 do
+          local enemy = world:add_actor(box(col * 20 + 2, row * 40 + 2, 12, 12))
+          enemy.enemy, enemy.filter = true, filter
+          enemy.vx, enemy.vy = rng(-8, 8) / 2, rng(-8, 8) / 2
+          enemies[#enemies + 1] = enemy
+        end
+      end
+      local count = #enemies
+      local snapshot
+      local function positions()
+        local parts = {}
+        for i = 1, count do parts[i] = string.format("%.17g,%.17g", enemies[i].x, enemies[i].y) end
+        return table.concat(parts, ";")
+      end
+      for frame = 1, frames do
+        for k = 1, count do
+          local enemy = enemies[reverse and count + 1 - k or k]
+          local _, _, n, hits = world:move(enemy, enemy.vx, enemy.vy)
+          for i = 1, n do -- turn at walls and at each other
+            if hits[i].nx ~= 0 then enemy.vx = hits[i].nx * math.abs(enemy.vx) end
+            if hits[i].ny ~= 0 then enemy.vy = hits[i].ny * math.abs(enemy.vy) end
+          end
+        end
+        if frame == snapshot_at then snapshot = positions() end
+        if frame % 50 == 0 or frame == frames then
+          for i = 1, count do
+            local a = enemies[i]
+            for j = i + 1, count do
+              assert(not budge.detect_collision(a, enemies[j]), "overlap in frame " .. frame)
+            end
+            assert(a.x >= 0 and a.y >= 0 and a.x + 12 <= 400 and a.y + 12 <= 400)
+          end
+        end
+      end
+      return positions(), snapshot
+    end
+    local forward, at_500 = run(false, 2000, 500)
+    assert.are.equal(at_500, (run(false, 500))) -- a rerun is bit-identical
+    assert.are_not.equal(forward, (run(true, 2000))) -- the order of moves decides, as in bump.lua
+  end)
+end)
+
+-- The oracle of frame contacts: the two straight motions, brute force over the moments
+-- where any edge of one passes an edge of the other (between two of them, overlap does
+-- not change), evaluated with each box's own position at that moment.
+local function oracle_contact(a0x, a0y, a1x, a1y, aw, ah, b0x, b0y, b1x, b1y, bw, bh)
+  local function at(s)
+    local ax, ay = a0x + (a1x - a0x) * s, a0y + (a1y - a0y) * s
+    local bx, by = b0x + (b1x - b0x) * s, b0y + (b1y - b0y) * s
+    return ax < bx + bw and bx < ax + aw and ay < by + bh and by < ay + ah
+  end
+  local times = {0, 1}
+  local function edge(p, vp, q, vq) -- p + vp s = q + vq s
+    if vp ~= vq then
+      local s = (q - p) / (vp - vq)
+      if s > 0 and s < 1 then times[#times + 1] = s end
+    end
+  end
+  local avx, avy, bvx, bvy = a1x - a0x, a1y - a0y, b1x - b0x, b1y - b0y
+  edge(a0x, avx, b0x + bw, bvx); edge(a0x + aw, avx, b0x, bvx)
+  edge(a0y, avy, b0y + bh, bvy); edge(a0y + ah, avy, b0y, bvy)
+  table.sort(times)
+  if at(0) then return 0, false, not at(1) end
+  for i = 1, #times - 1 do
+    if times[i + 1] > times[i] and at((times[i] + times[i + 1]) / 2) then
+      return times[i], true, not at(1)
+    end
+  end
+  return nil
+end
+
+describe("frame contacts", function()
+  it("find every bullet crossing a moving enemy, exactly as the brute-force oracle, in 10^5 "
+    .. "random frames moved in both orders", function()
+    local world = budge.new_world({cell_size = 32})
+    local bullet = world:add_actor(box(0, 0, 4, 4))
+    local enemy = world:add_actor(box(0, 0, 16, 16))
+    bullet.filter = function(_, other) return other == enemy and "cross" or nil end
+    local rng = random_source.new(42)
+    local out = {}
+    local found, misses, false_reports, worst = 0, 0, 0, 0
+    for case = 1, 100000 do
+      local ex, ey = rng(-400, 400) / 8, rng(-400, 400) / 8
+      local bx, by = ex + rng(-480, 480) / 8, ey + rng(-480, 480) / 8
+      local speed, angle = rng(160, 480) / 8, rng(0, 15)
+      local bdx = ({1, 1, 0, -1, -1, -1, 0, 1, 0.5, -0.5, 0.5, -0.5, 0.25, -0.75, 0.75, -0.25})[angle + 1]
+      local bdy = ({0, 1, 1, 1, 0, -1, -1, -1, 0.75, 0.25, -1, 1, -0.5, 0.5, 0.25, -0.75})[angle + 1]
+      bdx, bdy = bdx * speed, bdy * speed
+      local edx, edy = rng(-240, 240) / 8, rng(-240, 240) / 8
+      bullet.x, bullet.y, enemy.x, enemy.y = bx, by, ex, ey
+      world:update(bullet)
+      world:update(enemy)
+      if case % 2 == 0 then
+        world:move(bullet, bdx, bdy)
+        world:move(enemy, edx, edy)
+      else
+        world:move(enemy, edx, edy)
+        world:move(bullet, bdx, bdy)
+      end
+      local _, n = world:contacts(out)
+      local t, began, ended = oracle_contact(bx, by, bx + bdx, by + bdy, 4, 4,
+        ex, ey, ex + edx, ey + edy, 16, 16)
+      if t then
+        found = found + 1
+        if n ~= 1 then
+          misses = misses + 1
+        else
+          local record = out[1]
+          assert(record.item == bullet and record.other == enemy)
+          assert(record.began == began and record.ended == ended, "began/ended, case " .. case)
+          local error_t = math.abs(record.t - t)
+          if error_t > worst then worst = error_t end
+        end
+      elseif n ~= 0 then
+        false_reports = false_reports + 1
+      end
+    end
+    assert.are.same({0, 0}, {misses, false_reports})
+    assert.is_true(worst <= 1e-9, "t off by " .. worst)
+    assert.is_true(found > 10000, "found " .. found)
+  end)
+
+  it("report an actor in water once as began, once as ended, never began while inside", function()
+    local world = budge.new_world()
+    local water = world:add_sensor(box(100, 0, 50, 50))
+    local swimmer = world:add_actor(box(0, 10, 10, 10))
+    local began, ended, frames_inside = 0, 0, 0
+    local out = {}
+    for _ = 1, 100 do
+      world:move(swimmer, 3, 0)
+      local _, n = world:contacts(out)
+      for i = 1, n do
+        assert.are.same({swimmer, water}, {out[i].item, out[i].other})
+        if out[i].began then began = began + 1 end
+        if out[i].ended then ended = ended + 1 end
+        if not out[i].began and not out[i].ended then frames_inside = frames_inside + 1 end
+      end
+    end
+    assert.are.same({1, 1}, {began, ended})
+    assert.are.equal(math.floor((150 - 1) / 3) - math.floor(90 / 3) - 1, frames_inside)
+  end)
+
+  it("come sorted by t, then by the order added; a teleport starts its frame where it lands", function()
+    local world = budge.new_world()
+    local late = world:add_sensor(box(50, 0, 10, 10))
+    local early = world:add_sensor(box(20, 0, 10, 10))
+    local also = world:add_sensor(box(20, 20, 10, 10))
+    local runner = world:add_actor(box(0, 0, 10, 30))
+    world:move(runner, 100, 0)
+    local out, n = world:contacts({})
+    assert.are.equal(3, n)
+    assert.are.same({early, also, late}, {out[1].other, out[2].other, out[3].other})
+    assert.are.same({0.1, 0.1, 0.4}, {out[1].t, out[2].t, out[3].t})
+    runner.x = 0
+    world:update(runner) -- teleported back: this frame starts at x = 0
+    out, n = world:contacts(out)
+    assert.are.equal(0, n)
+    assert.are.equal(nil, out[1])
+  end)
+
+  it("take a pair when either actor's filter crosses the other; refuse a bad out", function()
+    local world = budge.new_world()
+    local a = world:add_actor(box(0, 0, 10, 10))
+    local b = world:add_actor(box(5, 0, 10, 10))
+    assert.are.equal(0, select(2, world:contacts()))
+    b.filter = function() return "cross" end
+    local out, n = world:contacts()
+    assert.are.same({1, b, a}, {n, out[1].item, out[1].other})
+    a.filter = function() return "cross" end
+    out = world:contacts()
+    assert.are.same({a, b}, {out[1].item, out[1].other}) -- both: the one added first
+    local ok, message = pcall(world.contacts, world, "list")
+    assert.is_false(ok)
+    assert.truthy(message:find('out must be a table or nil, got "list"', 1, true), message)
+  end)
+end)
+
+describe("check", function()
+  it("interleaved anywhere in a random script leaves every trace bit-identical", function()
+    local function script(with_checks)
+      local rng = random_source.new(99)
+      local world = budge.new_world({cell_size = 32})
+      local grid = {}
+      for r = 1, 20 do
+        grid[r] = {}
+        for c = 1, 20 do grid[r][c] = (r == 1 or r == 20 or c == 1 or c == 20 or rng(1, 8) == 1) and 1 or 0 end
+      end
+      world:add_tiles(grid, 16, 16)
+      local coin = world:add_sensor(box(100, 100, 8, 8))
+      local actors = {}
+      for i = 1, 8 do
+        actors[i] = world:add_actor(box(20 + i * 30, 40, 10, 10))
+        if i % 2 == 0 then
+          actors[i].filter = function(_, other) return other == coin and "cross" or "slide" end
+        end
+      end
+      local lines = {}
+      for step = 1, 4000 do
+        local actor = actors[rng(1, #actors)]
+        local dx, dy = rng(-64, 64) / 4, rng(-64, 64) / 4
+        local method = rng(1, 4) == 1 and "swept" or "axis_sweep"
+        if with_checks and step % 3 == 0 then
+          local probe = actors[(step % #actors) + 1]
+          world:check(probe, dy, dx, method)
+        end
+        lines[#lines + 1] = trace(world:move(actor, dx, dy, method))
+        if with_checks and step % 5 == 0 then world:check(actor, -dx, -dy) end
+        if step % 10 == 0 then lines[#lines + 1] = tostring(select(2, world:contacts())) end
+      end
+      return table.concat(lines, "\n")
+    end
+    assert.are.equal(script(false), script(true))
+  end)
+
+  it("returns what move would, and keeps the last move's hits valid", function()
+    local world = budge.new_world()
+    local wall = world:add_solid(box(30, 0, 10, 10))
+    local actor = world:add_actor(box(0, 0, 10, 10))
+    local _, _, n, hits = world:move(actor, 5, 0)
+    assert.are.equal(0, n)
+    _, _, n, hits = world:move(actor, 0, 1)
+    local x, y, cn, chits = world:check(actor, 50, 0)
+    assert.are.same({20, 1, 1, wall}, {x, y, cn, chits[1].other})
+    assert.are.same({5, 1}, {actor.x, actor.y})
+    assert.are_not.equal(hits, chits)
+    assert.are.same({20, 1}, xy(world:move(actor, 50, 0)))
+  end)
+end)
+
+describe("query_sweep", function()
+  it("equals a brute-force oracle on 10^4 random cases, including tiles", function()
+    local world = budge.new_world({cell_size = 32})
+    local rng = random_source.new(5)
+    local grid = {}
+    for r = 1, 16 do
+      grid[r] = {}
+      for c = 1, 16 do grid[r][c] = rng(1, 6) == 1 and 1 or 0 end
+    end
+    local tiles = world:add_tiles(grid, 16, 16, {x = 40, y = 40})
+    local items = {}
+    for i = 1, 12 do items[i] = world:add_solid(box(rng(0, 300), rng(0, 300), rng(1, 40), rng(1, 40))) end
+    for i = 13, 18 do items[i] = world:add_sensor(box(rng(0, 300), rng(0, 300), rng(1, 20), rng(1, 20))) end
+    for i = 19, 24 do items[i] = world:add_actor(box(rng(0, 300), rng(0, 300), rng(1, 20), rng(1, 20))) end
+    local function enter(x, y, w, h, dx, dy, bx, by, bw, bh)
+      return oracle_contact(x, y, x + dx, y + dy, w, h, bx, by, bx, by, bw, bh)
+    end
+    local out, out_t = {}, {}
+    for _ = 1, 10000 do
+      local x, y = rng(-200, 1400) / 4, rng(-200, 1400) / 4
+      local w, h = rng(0, 24), rng(0, 24)
+      if w == 0 then h = 0 end
+      local dx, dy = rng(-800, 800) / 4, rng(-800, 800) / 4
+      local expected = {}
+      for i = 1, #items do
+        local item = items[i]
+        local t = w > 0 and enter(x, y, w, h, dx, dy, item.x, item.y, item.width, item.height)
+        if w == 0 then -- a segment: the point inside the open box at some moment
+          t = enter(x, y, 1e-300, 1e-300, dx, dy, item.x, item.y, item.width, item.height)
+        end
+        if t then expected[#expected + 1] = {item, t, i} end
+      end
+      local first
+      for r = 1, 16 do
+        for c = 1, 16 do
+          if grid[r][c] == 1 then
+            local t = enter(x, y, w > 0 and w or 1e-300, w > 0 and h or 1e-300, dx, dy,
+              40 + (c - 1) * 16, 40 + (r - 1) * 16, 16, 16)
+            if t and (first == nil or t < first) then first = t end
+          end
+        end
+      end
+      if first then expected[#expected + 1] = {tiles, first, 0} end -- (added first)
+      table.sort(expected, function(a, b)
+        if a[2] ~= b[2] then return a[2] < b[2] end
+        return a[3] < b[3]
+      end)
+      local _, n = world:query_sweep(x, y, w, h, dx, dy, out, out_t)
+      local label = string.format("query_sweep(%.17g, %.17g, %g, %g, %.17g, %.17g)", x, y, w, h,
+        dx, dy)
+      assert(#expected == n, label .. " found " .. n .. ", the oracle " .. #expected)
+      for i = 1, n do
+        assert(expected[i][1] == out[i], label .. ": item " .. i)
+        assert(math.abs(expected[i][2] - out_t[i]) <= 1e-9, label .. ": t " .. i)
+      end
+    end
+  end)
+
+  it("takes a filter, which may leave the probing actor out", function()
+    local world = budge.new_world()
+    local me = world:add_actor(box(0, 0, 10, 10))
+    local wall = world:add_solid(box(40, 0, 10, 10))
+    local out, n, out_t = world:query_sweep(0, 0, 10, 10, 100, 0, {}, {},
+      function(item) return item ~= me end)
+    assert.are.same({1, wall, 0.3}, {n, out[1], out_t[1]})
+    out, n = world:query_rect(0, 0, 100, 10, out, function(item) return item == me end)
+    assert.are.same({1, me}, {n, out[1]})
+    local ok, message = pcall(world.query_point, world, 1, 1, out, function() world:add_solid(box(0, 0, 1, 1)) end)
+    assert.is_false(ok)
+    assert.truthy(message:find("world:add_solid was called from inside a query's filter", 1, true), message)
+    assert.are.same({1, 1, 0, 0}, {world:count()})
+  end)
+end)
+
+describe("a ball bouncing in a closed box", function()
+  it("never leaves it in 10^5 frames, and with dyadic speeds every reflection is exact", function()
+    local world = budge.new_world()
+    world:add_solid(box(-16, -16, 288, 16))
+    world:add_solid(box(-16, 256, 288, 16))
+    world:add_solid(box(-16, 0, 16, 256))
+    world:add_solid(box(256, 0, 16, 256))
+    local ball = world:add_actor(box(100, 60, 8, 8))
+    ball.filter = always("bounce")
+    local vx, vy = 13.375, -7.625
+    local ox, oy, ovx, ovy = 100, 60, vx, vy -- the oracle: each axis reflected in [0, 248]
+    local function reflect(p, v)
+      local q = p + v
+      if q < 0 then return -q, -v elseif q > 248 then return 496 - q, -v end
+      return q, v
+    end
+    local bounces = 0
+    for frame = 1, 100000 do
+      local _, _, n, hits = world:move(ball, vx, vy)
+      for i = 1, n do
+        if hits[i].nx ~= 0 then vx = hits[i].nx * math.abs(vx); bounces = bounces + 1 end
+        if hits[i].ny ~= 0 then vy = hits[i].ny * math.abs(vy); bounces = bounces + 1 end
+      end
+      ox, ovx = reflect(ox, ovx)
+      oy, ovy = reflect(oy, ovy)
+      if ball.x ~= ox or ball.y ~= oy or vx ~= ovx or vy ~= ovy then
+        error(("frame %d: ball at %.17g,%.17g moving %g,%g; reflected exactly: %.17g,%.17g")
+          :format(frame, ball.x, ball.y, vx, vy, ox, oy))
+      end
+      assert(ball.x >= 0 and ball.x <= 248 and ball.y >= 0 and ball.y <= 248)
+    end
+    assert.is_true(bounces > 8000, "bounces " .. bounces)
+  end)
+end)
+
+describe("garbage", function()
+  it("allocates nothing for filtered moves, sensors, contacts, checks and swept queries", function()
+    local world = budge.new_world()
+    local grid = {}
+    for row = 1, 30 do
+      grid[row] = {}
+      for col = 1, 30 do grid[row][col] = (row == 1 or row == 30 or col == 1 or col == 30) and 1 or 0 end
+    end
+    world:add_tiles(grid, 16, 16)
+    for i = 1, 20 do world:add_sensor(box(40 + (i * 37) % 400, 40 + (i * 53) % 400, 8, 8)) end
+    local actors = {}
+    local function filter(_, other) return other.bullet and "cross" or "bounce" end
+    for i = 1, 30 do
+      local actor = world:add_actor(box(40 + i * 13, 40 + i * 11, 10, 10))
+      if i % 3 == 0 then actor.filter = filter end
+      if i % 5 == 0 then actor.bullet = true end
+      actors[i] = actor
+    end
+    local out, out_t = {}, {}
+    local function keep(item) return item.bullet == nil end
+    local function frame(f)
+      for i = 1, #actors do
+        world:move(actors[i], ((i + f) % 17) - 8, ((i * 3 + f) % 17) - 8, i % 7 == 0 and "swept" or nil)
+      end
+      world:check(actors[1], 40, 40)
+      world:query_sweep(30, 30, 10, 10, 300, 200, out, out_t, keep)
+      world:contacts(out)
+    end
+    local function reset()
+      for i = 1, #actors do actors[i].x, actors[i].y = 40 + i * 13, 40 + i * 11; world:update(actors[i]) end
+    end
+    local bytes = garbage.measure(frame, 200, {jit_off = true, reset = reset,
+      warm = function() for _ = 1, 3 do reset(); for f = 1, 200 do frame(f) end end end})
+    assert.equal(0, bytes)
+  end)
+end)
