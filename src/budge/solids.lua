@@ -165,34 +165,65 @@ local function filter_tiles(set, first, cross, tiles, actor, filter, record)
   set.n = n
 end
 
--- Appends the records found[1..count] (boxes: solids, sensors or actors) to the set or
--- the cross set by the response `default` or the filter's, skipping removed records,
--- `self` (the moving actor's record) and what the filter ignores. `sensor`: the response
--- only decides whether it is met, always as "cross".
-local function sort_records(found, count, set, cross, n, actor, filter, default, sensor, self)
-  local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
-  local cols, rows, ids, responses = set.col, set.row, set.id, set.response
+-- Appends a record's box to the cross set.
+local function cross_record(cross, record)
+  local n = cross.n + 1
+  cross.x[n], cross.y[n], cross.w[n], cross.h[n] = record.x, record.y, record.width,
+    record.height
+  cross.other[n], cross.col[n], cross.row[n] = record.item, nil, nil
+  cross.id[n], cross.record[n] = record.id, record
+  cross.n = n
+end
+
+-- Appends a record's box to the candidate set at index n, with its response.
+local function block_record(set, n, record, response)
+  set.x[n], set.y[n], set.w[n], set.h[n] = record.x, record.y, record.width, record.height
+  set.oneway[n], set.other[n], set.col[n], set.row[n] = record.oneway, record.item, nil, nil
+  set.id[n], set.response[n] = record.id, response
+end
+
+-- Appends the records found[1..count] (solids or actors) to the world's set or cross set
+-- by the response `default` or the probe's filter's, skipping removed records, `self`
+-- (the moving actor's record) and what the filter ignores. Returns the set's new count.
+-- LuaJIT shaping: the fields are written by the two small functions above and the filter
+-- read from the probe, not passed in: with them in this loop, LuaJIT aborted its trace
+-- ("register coalescing too complex") a thousand times in 50 frames of
+-- bench/contacts.lua, each time compiling again, and moves took 5.8 us instead of 0.4.
+local function sort_records(world, found, count, n, self, default)
   for i = 1, count do
     local record = found[i]
     found[i] = nil
-    local item = record.item
     if not record.removed and record ~= self then
       local response = default
-      if filter ~= nil then response = hits.response(filter(actor, item), item) end
-      if response ~= nil then
-        if sensor or response == CROSS then
-          to_cross(cross, record.x, record.y, record.width, record.height, item, nil, nil,
-            record.id, record)
-        else
-          n = n + 1
-          xs[n], ys[n], ws[n], hs[n] = record.x, record.y, record.width, record.height
-          oneway[n], other[n], cols[n], rows[n], ids[n] = record.oneway, item, nil, nil, record.id
-          responses[n] = response
-        end
+      local probe = world._probe
+      if probe.filter ~= nil then
+        response = response_of(probe.filter(probe.actor, record.item), record.item)
+      end
+      if response == CROSS then
+        cross_record(world._cross, record)
+      elseif response ~= nil then
+        n = n + 1
+        block_record(world._set, n, record, response)
       end
     end
   end
   return n
+end
+
+-- Appends the sensors found[1..count] to the world's cross set, skipping removed ones
+-- and those the probe's filter (if any) ignores.
+local function cross_sensors(world, found, count)
+  for i = 1, count do
+    local record = found[i]
+    found[i] = nil
+    if not record.removed then
+      local probe = world._probe
+      if probe.filter == nil
+        or response_of(probe.filter(probe.actor, record.item), record.item) ~= nil then
+        cross_record(world._cross, record)
+      end
+    end
+  end
 end
 
 ---Fills the world's candidate set with what the rectangle may meet: the hashed solid
@@ -218,7 +249,7 @@ function solids.gather(world, x, y, width, height)
   local bx, by, bx1, by1 = clip_to_boxes(world, x, y, x + width, y + height)
   if bx <= bx1 and by <= by1 and world._solid_count > 0 then
     local count = world._solids:collect(bx, by, bx1 - bx, by1 - by, found, 0)
-    n = sort_records(found, count, set, cross, n, actor, filter, SLIDE, false, nil)
+    n = sort_records(world, found, count, n, nil, SLIDE)
   end
   set.n = n
   local layers, records = world._layers, world._records
@@ -232,14 +263,12 @@ function solids.gather(world, x, y, width, height)
     end
   end
   if world._sensor_count > 0 then
-    local count = world._sensors:collect(x, y, width, height, found, 0)
-    sort_records(found, count, set, cross, 0, actor, filter, CROSS, true, nil)
+    cross_sensors(world, found, world._sensors:collect(x, y, width, height, found, 0))
   end
   if filter ~= nil and #world._actor_list > 1 then
     actors.rehash(world)
     local count = world._actors:collect(x, y, width, height, found, 0)
-    n = sort_records(found, count, set, cross, n, actor, filter, nil, false,
-      world._records[actor])
+    n = sort_records(world, found, count, n, world._records[actor], nil)
     set.n = n
   end
   return set, cross
@@ -319,8 +348,7 @@ end
 function solids.gather_sensors(world, x, y, width, height)
   local cross, found = world._cross, world._found
   cross.n = 0
-  local count = world._sensors:collect(x, y, width, height, found, 0)
-  sort_records(found, count, world._set, cross, 0, nil, nil, CROSS, true, nil)
+  cross_sensors(world, found, world._sensors:collect(x, y, width, height, found, 0))
   return cross
 end
 
