@@ -12,6 +12,7 @@ local solid = world:add_solid(box(50, 0, 4, 4))
 local sensor = world:add_sensor(box(0, 40, 4, 4))
 local picky = world:add_actor(box(40, 0, 4, 4))
 picky.filter = function() return "bogus" end
+local pusher = world:add_solid(box(10, 0, 4, 4))
 local CASES = {
   {"detect_collision", function() local _ = budge.detect_collision(box(0, 0, 1, 1), nil) end},
   {"resolve_collision", function() local _ = budge.resolve_collision(box(0, 0, 1, 1), box(0, 0, 1, 1), "x") end},
@@ -37,6 +38,7 @@ local CASES = {
   {"contacts", function() local _ = world:contacts(7) end},
   {"filter response", function() local _ = world:move(picky, 20, 0) end},
   {"check response", function() local _ = world:check(picky, 20, 0) end},
+  {"move_solid response", function() local _ = world:move_solid(pusher, 30, 0) end},
   {"tiles.merge", function() local _ = budge.tiles.merge({1, 1}, 16, 16) end},
   {"tiles.merge ragged", function() local _ = budge.tiles.merge({{1}, {}}, 16, 16) end},
   {"advise", function() local _ = budge.advise({solids = {}, movers = {{width = 1}}}) end},
@@ -57,6 +59,6 @@ describe("errors from every public entry", function()
     assert.are.same({0, 0}, {actor.x, actor.y})
     assert.are.same({50, 0}, {solid.x, solid.y})
     assert.are.same({40, 0}, {picky.x, picky.y})
-    assert.are.same({1, 2, 0, 1}, {world:count()})
+    assert.are.same({2, 2, 0, 1}, {world:count()})
   end)
 end)

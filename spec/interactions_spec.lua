@@ -22,43 +22,64 @@ local function always(response) return function() return response end end
 local function xy(x, y) return {x, y} end
 
 describe("responses", function()
-  it("slide (and true) is exactly the move without a filter, in 3000 random scenes", function()
+  it("slide (and true) is exactly the move without a filter, in 3000 random scenes with "
+    .. "sensors, for axis_sweep and swept; a sensor far away changes nothing", function()
     local rng = random_source.new(20261201)
     local checked = 0
-    for _ = 1, 3000 do
+    for case = 1, 3000 do
       local grid = {}
       for r = 1, 12 do
         grid[r] = {}
         for c = 1, 12 do grid[r][c] = rng(1, 4) == 1 and rng(1, 5) or 0 end
       end
-      local boxes = {}
+      local boxes, sensors = {}, {}
       for i = 1, 6 do
         boxes[i] = {x = rng(0, 180), y = rng(0, 180), width = rng(1, 40),
           height = rng(1, 40), wall_type = rng(1, 5) == 1 and "oneway" or nil}
+        sensors[i] = {x = rng(0, 180), y = rng(0, 180), width = rng(0, 30), height = rng(0, 30)}
       end
       local ax, ay = rng(0, 720) / 4, rng(0, 720) / 4
       local aw, ah = rng(1, 20), rng(1, 20)
       local dx, dy = rng(-400, 400) / 4, rng(-400, 400) / 4
+      local method = case % 2 == 0 and "swept" or "axis_sweep"
       local results, clear = {}, true
-      for k = 1, 3 do
+      for k = 1, 4 do
         local world = budge.new_world({cell_size = 32})
-        world:add_tiles(grid, 16, 16, {is_oneway = function(id) return id == 5 end})
+        local solid = {}
+        solid[world:add_tiles(grid, 16, 16, {is_oneway = function(id) return id == 5 end})] = true
         for i = 1, #boxes do
           local b = boxes[i]
-          world:add_solid({x = b.x, y = b.y, width = b.width, height = b.height,
-            wall_type = b.wall_type})
+          solid[world:add_solid({x = b.x, y = b.y, width = b.width, height = b.height,
+            wall_type = b.wall_type})] = true
+          if k ~= 4 then world:add_sensor(box(sensors[i].x, sensors[i].y, sensors[i].width,
+            sensors[i].height)) end
         end
-        if select(2, world:query_rect(ax, ay, aw, ah)) > 0 then clear = false end
+        if k == 4 then world:add_sensor(box(5000, 5000, 10, 10)) end
+        local _, inside = world:query_rect(ax, ay, aw, ah, nil,
+          function(item) return solid[item] end) -- (inside a sensor is fine)
+        if inside > 0 then clear = false end
         local actor = world:add_actor(box(ax, ay, aw, ah))
         if k == 2 then actor.filter = always("slide") elseif k == 3 then actor.filter = always(true) end
-        results[k] = trace(world:move(actor, dx, dy))
+        results[k] = trace(world:move(actor, dx, dy, method))
+        if k == 4 then -- no sensor on the way: the same place, the blocking hits only
+          local blocking = {}
+          for part in results[1]:gmatch("%S+") do
+            if not part:find("/cross/", 1, true) then blocking[#blocking + 1] = part end
+          end
+          local with_cross = results[1]:match("^%S+ %S+ (%d+)")
+          local n = 0
+          for _ in results[1]:gmatch("/cross/") do n = n + 1 end
+          blocking[3] = tostring(tonumber(with_cross) - n)
+          results[4] = results[4] == table.concat(blocking, " ")
+        end
       end
       -- (an actor that starts inside tiles lists, with a filter, every tile that holds it
       -- where it is; without one, the first line of them: README, "Responses")
       if clear then
         checked = checked + 1
-        assert.are.equal(results[1], results[2])
-        assert.are.equal(results[1], results[3])
+        assert.are.equal(results[1], results[2], method)
+        assert.are.equal(results[1], results[3], method)
+        assert.is_true(results[4], method)
       end
     end
     assert.is_true(checked > 1000, "checked " .. checked)
@@ -646,6 +667,76 @@ describe("a ball bouncing in a closed box", function()
       assert(ball.x >= 0 and ball.x <= 248 and ball.y >= 0 and ball.y <= 248)
     end
     assert.is_true(bounces > 8000, "bounces " .. bounces)
+  end)
+end)
+
+describe("what a hostile review found", function()
+  it("a sensor the actor is inside is reported when the move is blocked at once", function()
+    for _, filter in ipairs({false, true}) do
+      local world = budge.new_world()
+      local water = world:add_sensor(box(0, 0, 100, 100))
+      local wall = world:add_solid(box(10, 0, 10, 100))
+      local swimmer = world:add_actor(box(0, 10, 10, 10))
+      if filter then swimmer.filter = always("slide") end
+      local x, _, n, hits = world:move(swimmer, 5, 0)
+      assert.are.same({0, 2, water, nil, 0, wall, "right"}, {x, n, hits[1].other, hits[1].side,
+        hits[1].t, hits[2].other, hits[2].side})
+    end
+  end)
+
+  it("a sensor crossed along y after a blocked x has the y phase's t, filter or not", function()
+    for _, filter in ipairs({false, true}) do
+      local world = budge.new_world()
+      world:add_solid(box(-10, -50, 10, 200))
+      local coin = world:add_sensor(box(0, 50, 10, 10))
+      local actor = world:add_actor(box(0, 0, 10, 10))
+      if filter then actor.filter = always("slide") end
+      local _, y, n, hits = world:move(actor, -90, 100)
+      assert.are.same({100, 2, coin, "floor"}, {y, n, hits[2].other, hits[2].side})
+      assert.is_true(math.abs(hits[2].t - (90 + 40) / 190) < 1e-15, hits[2].t)
+    end
+  end)
+
+  it("an actor with a filter never blocks a push of another", function()
+    for _, filter in ipairs({false, true}) do
+      local world = budge.new_world()
+      local pusher = world:add_solid(box(0, 0, 10, 10))
+      local pushed = world:add_actor(box(10, 0, 10, 10))
+      world:add_actor(box(25, 0, 10, 10)) -- in the way
+      if filter then pushed.filter = always("slide") end
+      local n = world:move_solid(pusher, 20, 0)
+      assert.are.same({0, 30}, {n, pushed.x})
+    end
+  end)
+
+  it("bounce inside a solid stops after bouncing in place both ways", function()
+    local world = budge.new_world()
+    world:add_solid(box(4, 0, 2, 10))
+    local actor = world:add_actor(box(0, 0, 10, 10))
+    actor.filter = always("bounce")
+    local x, _, n, hits = world:move(actor, 5, 0)
+    assert.are.same({0, 2, "right", "left"}, {x, n, hits[1].side, hits[2].side})
+  end)
+
+  it("two extents of 0 on the axis never cross", function()
+    local world = budge.new_world()
+    world:add_sensor(box(10, 0, 0, 20))
+    local actor = world:add_actor(box(0, 5, 0, 5))
+    assert.are.equal(0, select(3, world:move(actor, 20, 0)))
+    actor.x = 0
+    world:update(actor)
+    assert.are.equal(0, select(3, world:move(actor, 20, 0, "swept")))
+  end)
+
+  it("a sensor moved by update sweeps its frame: a moving hazard never tunnels", function()
+    local world = budge.new_world()
+    local saw = world:add_sensor(box(0, 0, 10, 10))
+    local player = world:add_actor(box(50, 0, 10, 10))
+    world:contacts()
+    saw.x = 100
+    world:update(saw)
+    local out, n = world:contacts()
+    assert.are.same({1, player, saw, 0.4}, {n, out[1].item, out[1].other, out[1].t})
   end)
 end)
 

@@ -282,8 +282,8 @@ function World:remove(item)
 end
 
 ---Tells the world that a box's position, size or wall_type changed outside world:move
----(a teleport: an actor's or sensor's frame for world:contacts starts here), or that a
----tile layer's grid changed.
+---(for an actor, a teleport: its frame for world:contacts starts here; for a sensor, its
+---move: its frame still sweeps from where it began), or that a tile layer's grid changed.
 ---@param item table a box or a tile layer handle of this world
 function World:update(item)
   enter(self, "update")
@@ -299,7 +299,9 @@ function World:update(item)
     check_box(item, "box", 2)
     check_box_span(self, item, "box")
     actors.rehash_one(self, record)
-    record._fx, record._fy = record.x, record.y
+    -- an actor was teleported: its frame starts here; a sensor moves only this way, so
+    -- its frame still sweeps from where it began
+    if kind == ACTOR then record._fx, record._fy = record.x, record.y end
   else
     check_number(item.x, "layer.x", 2)
     check_number(item.y, "layer.y", 2)
@@ -437,14 +439,15 @@ function World:move_solid(solid, dx, dy)
   local record = self._records[solid]
   if record == nil or record.kind ~= SOLID then
     error(format("solid must be a solid of this world (add it with world:add_solid), got %s",
-      record and ("an " .. record.kind) or describe(solid)), 2)
+      record and A_KIND[record.kind] or describe(solid)), 2)
   end
   check_box(solid, "solid", 2)
   check_number(dx, "dx", 2)
   check_number(dy, "dy", 2)
   check_span(self, solid.x + dx, solid.width, "dx", "the solid")
   check_span(self, solid.y + dy, solid.height, "dy", "the solid")
-  return carry.run(self, record, dx, dy)
+  local n, crushed = carry.run(self, record, dx, dy) -- (no tail call: errors name your line)
+  return n, crushed
 end
 
 -- A query's last argument: a function or nil.
@@ -579,7 +582,7 @@ end
 
 ---Every pair of things that touched during the frame, from both motions: each actor's
 ---and sensor's box moves in a straight line from where it was at the previous call (or
----where it was added, or where world:update put it) to where it is now, and a pair is
+---where it was added, or where world:update teleported an actor) to where it is now, and a pair is
 ---reported when the two boxes overlap strictly at some moment of that, whichever order
 ---the game moved them in. A pair is reported when either actor's filter returns "cross"
 ---for the other, or for an actor and a sensor unless the actor's filter returns false
