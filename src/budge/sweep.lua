@@ -71,6 +71,8 @@ end
 ---@field actor? table the moving box, passed to the filter
 ---@field filter? fun(actor: table, other: any, col?: integer, row?: integer, id?: any): any
 ---the moving actor's filter (gathering reads it)
+---@field before number px of the move's path before this phase (hits' times: move.lua)
+---@field path number the move's whole path, px
 ---@field best? number output: the nearest stop found so far
 ---@field touch budge.HashRecord[] output: the hashed records that stop the box at best
 ---@field touched integer output: how many of touch are valid
@@ -81,7 +83,8 @@ end
 ---@return budge.AxisProbe
 function sweep.new_probe()
   return {is_x = true, forward = true, pos = 0, size = 0, edge = 0, reach = 0, cross = 0,
-    cross_end = 0, blocks_oneway = false, touch = {}, touched = 0, cols = {}, rows = {}}
+    cross_end = 0, blocks_oneway = false, before = 0, path = 1, touch = {}, touched = 0,
+    cols = {}, rows = {}}
 end
 
 ---One axis of a slab clip (Liang-Barsky): narrows [enter, leave], the fractions of the
