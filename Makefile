@@ -17,6 +17,7 @@ bench-world:
 	luajit bench/platforms.lua --runs 5
 	lua5.4 bench/platforms.lua --runs 3 --frames 100
 	BUMP_PATH=$${BUMP_PATH:-../shared/peers/bump.lua-3.1.7} luajit bench/contacts.lua --runs 5
+	BUMP_PATH=$${BUMP_PATH:-../shared/peers/bump.lua-3.1.7} luajit bench/contacts.lua --runs 5 --budget large
 	BUMP_PATH=$${BUMP_PATH:-../shared/peers/bump.lua-3.1.7} lua5.4 bench/contacts.lua --runs 3 --frames 60
 
 # Speed against accuracy: the scenario catalogue and the world bench scene for every
