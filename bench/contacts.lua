@@ -44,6 +44,20 @@ local function free_cells(grid, random, count)
   return cells
 end
 
+-- Runs frame() 30 times to warm up, then reset() and the measured frames with the
+-- collector stopped; returns the KB allocated per measured frame.
+local function measure(frame, reset)
+  for _ = 1, 30 do frame() end
+  reset()
+  collectgarbage("collect")
+  collectgarbage("stop")
+  local before = collectgarbage("count")
+  for _ = 1, options.frames do frame() end
+  local kb = (collectgarbage("count") - before) / options.frames
+  collectgarbage("restart")
+  return kb
+end
+
 local DIRECTIONS = {{40, 0}, {0, 40}, {-40, 0}, {0, -40}, {28, 28}, {-28, 28}, {28, -28},
   {-28, -28}}
 
@@ -107,14 +121,7 @@ local function run_budge()
     move_time = move_time + (moved - started)
     found = found + n
   end
-  for _ = 1, 30 do frame() end -- warm-up
-  move_time, contact_time, found = 0, 0, 0
-  collectgarbage("collect")
-  collectgarbage("stop")
-  local before = collectgarbage("count")
-  for _ = 1, options.frames do frame() end
-  local kb = (collectgarbage("count") - before) / options.frames
-  collectgarbage("restart")
+  local kb = measure(frame, function() move_time, contact_time, found = 0, 0, 0 end)
   local per = 1e9 / (options.frames * (#walkers + #bullets))
   return move_time * per, contact_time * per, found / options.frames, kb
 end
@@ -191,14 +198,7 @@ local function run_bump()
     end
     move_time = move_time + (clock() - started)
   end
-  for _ = 1, 30 do frame() end
-  move_time, found = 0, 0
-  collectgarbage("collect")
-  collectgarbage("stop")
-  local before = collectgarbage("count")
-  for _ = 1, options.frames do frame() end
-  local kb = (collectgarbage("count") - before) / options.frames
-  collectgarbage("restart")
+  local kb = measure(frame, function() move_time, found = 0, 0 end)
   return move_time * 1e9 / (options.frames * (#walkers + #bullets)), 0, found / options.frames, kb
 end
 

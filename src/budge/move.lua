@@ -146,6 +146,21 @@ local function axis_phase(world, is_x, pos, cross, size, cross_size, delta)
   return best
 end
 
+-- Records candidate i of the set as a "cross" hit at time t, entered by `side` (nil: the
+-- box was inside it already), unless this move reported it already: a record stamped by
+-- this move, or, from the move's second phase on, a tile among its hits.
+local function add_crossing(world, set, i, side, t)
+  local record = set.record[i]
+  if record then
+    if record._cross_stamp == world._move_stamp then return end
+    record._cross_stamp = world._move_stamp
+  elseif world._round > 1 and has_tile(world, 1, set.other[i], set.col[i], set.row[i]) then
+    return
+  end
+  add_hit(world, set.other[i], side, set.col[i], set.row[i], set.y[i], set.x[i], set.id[i],
+    CROSS, t)
+end
+
 -- Reports the candidates of the cross set that the box's path along the axis passes
 -- through (strictly), from `pos` to `final`, as "cross" hits: entered (the leading edge
 -- reaching them) at (passed + distance) / path of the move, or at passed / path with no
@@ -156,9 +171,7 @@ end
 -- (looked for from the second phase on), is not reported again.
 local function report_crossings(world, cross, is_x, forward, pos, final, size, cross_lo,
                                 cross_hi, passed, path, from, to)
-  local xs, ys, ws, hs, other = cross.x, cross.y, cross.w, cross.h, cross.other
-  local cols, rows, ids, records = cross.col, cross.row, cross.id, cross.record
-  local stamp, later = world._move_stamp, world._round > 1
+  local xs, ys, ws, hs = cross.x, cross.y, cross.w, cross.h
   local edge = pos + size
   local side
   if is_x then side = forward and "right" or "left" else side = forward and "floor" or "ceiling" end
@@ -175,17 +188,9 @@ local function report_crossings(world, cross, is_x, forward, pos, final, size, c
       end
       -- (two extents of 0 on the axis never overlap strictly)
       if on_path and length + size > 0 and distance >= from and distance < to then
-        local record, fresh = records[i], true
-        if record then
-          if record._cross_stamp == stamp then fresh = false else record._cross_stamp = stamp end
-        elseif later and has_tile(world, 1, other[i], cols[i], rows[i]) then
-          fresh = false
-        end
-        if fresh then
-          local inside = distance < 0
-          add_hit(world, other[i], not inside and side or nil, cols[i], rows[i], ys[i], xs[i],
-            ids[i], CROSS, (inside and passed or passed + distance) / path)
-        end
+        local inside = distance < 0
+        add_crossing(world, cross, i, not inside and side or nil,
+          (inside and passed or passed + distance) / path)
       end
     end
   end
@@ -305,23 +310,14 @@ local function filtered_phase(world, is_x, pos, cross, size, cross_size, delta, 
       end
     end
     -- the crossings before the stop (or overlapping the box where it started)
-    local stamp, later = world._move_stamp, world._round > 1
     for c = 1, n_crossed do
       local i = crossed[c]
       local near, length = is_x and xs[i] or ys[i], is_x and ws[i] or hs[i]
       local distance = forward and near - edge or pos - (near + length)
       if length + size > 0 and (best_key == nil or distance < 0 or keys[i] < best_key) then
-        local record, fresh = records[i], true
-        if record then
-          if record._cross_stamp == stamp then fresh = false else record._cross_stamp = stamp end
-        elseif later and has_tile(world, 1, other[i], cols[i], rows[i]) then
-          fresh = false
-        end
-        if fresh then
-          local inside = distance < 0
-          add_hit(world, other[i], not inside and side or nil, cols[i], rows[i], ys[i], xs[i],
-            ids[i], CROSS, (inside and passed or passed + distance) / path)
-        end
+        local inside = distance < 0
+        add_crossing(world, set, i, not inside and side or nil,
+          (inside and passed or passed + distance) / path)
       end
     end
     if best then
@@ -471,25 +467,14 @@ end
 -- as report_crossings does.
 local function report_swept_crossings(world, cross, x, y, width, height, dx, dy, from, to,
                                       contact, t0)
-  local xs, ys, ws, hs, other = cross.x, cross.y, cross.w, cross.h, cross.other
-  local cols, rows, ids, records = cross.col, cross.row, cross.id, cross.record
-  local stamp, later = world._move_stamp, world._round > 1
+  local xs, ys, ws, hs = cross.x, cross.y, cross.w, cross.h
   for i = 1, cross.n do
     local enter, axis = box_enter(x, y, width, height, dx, dy, xs[i], ys[i], ws[i], hs[i])
     if enter and enter >= from and enter < to and enter < contact then
-      local record, fresh = records[i], true
-      if record then
-        if record._cross_stamp == stamp then fresh = false else record._cross_stamp = stamp end
-      elseif later and has_tile(world, 1, other[i], cols[i], rows[i]) then
-        fresh = false
-      end
-      if fresh then
-        local side
-        if axis == 1 then side = dx > 0 and "right" or "left"
-        elseif axis == 2 then side = dy > 0 and "floor" or "ceiling" end
-        add_hit(world, other[i], side, cols[i], rows[i], ys[i], xs[i], ids[i], CROSS,
-          t0 + (1 - t0) * enter)
-      end
+      local side
+      if axis == 1 then side = dx > 0 and "right" or "left"
+      elseif axis == 2 then side = dy > 0 and "floor" or "ceiling" end
+      add_crossing(world, cross, i, side, t0 + (1 - t0) * enter)
     end
   end
 end
