@@ -161,6 +161,22 @@ local function add_crossing(world, set, i, side, t)
     CROSS, t)
 end
 
+-- How far along the box's path on the axis candidate i of the set is entered (negative:
+-- the box overlaps it where it starts), or nil when the path, from `pos` until the
+-- leading face reaches `far`, never overlaps it (strictly across the axis too).
+local function entry_distance(set, i, is_x, forward, pos, edge, far, cross_lo, cross_hi)
+  local low, length, across, across_length
+  if is_x then low, length, across, across_length = set.x[i], set.w[i], set.y[i], set.h[i]
+  else low, length, across, across_length = set.y[i], set.h[i], set.x[i], set.w[i] end
+  if across >= cross_hi or cross_lo >= across + across_length then return nil end
+  if forward then
+    if low < far and low + length > pos then return low - edge end
+  elseif low + length > far and low < edge then
+    return pos - (low + length)
+  end
+  return nil
+end
+
 -- Reports the candidates of the cross set that the box's path along the axis passes
 -- through (strictly), from `pos` to `final`, as "cross" hits: entered (the leading edge
 -- reaching them) at (passed + distance) / path of the move, or at passed / path with no
@@ -171,27 +187,19 @@ end
 -- (looked for from the second phase on), is not reported again.
 local function report_crossings(world, cross, is_x, forward, pos, final, size, cross_lo,
                                 cross_hi, passed, path, from, to)
-  local xs, ys, ws, hs = cross.x, cross.y, cross.w, cross.h
+  local ws, hs = cross.w, cross.h
   local edge = pos + size
   local side
   if is_x then side = forward and "right" or "left" else side = forward and "floor" or "ceiling" end
+  local far = forward and final + size or final
   for i = 1, cross.n do
-    local low, length, across, across_length
-    if is_x then low, length, across, across_length = xs[i], ws[i], ys[i], hs[i]
-    else low, length, across, across_length = ys[i], hs[i], xs[i], ws[i] end
-    if across < cross_hi and cross_lo < across + across_length then
-      local distance, on_path
-      if forward then
-        distance, on_path = low - edge, low < final + size and low + length > pos
-      else
-        distance, on_path = pos - (low + length), low + length > final and low < edge
-      end
-      -- (two extents of 0 on the axis never overlap strictly)
-      if on_path and length + size > 0 and distance >= from and distance < to then
-        local inside = distance < 0
-        add_crossing(world, cross, i, not inside and side or nil,
-          (inside and passed or passed + distance) / path)
-      end
+    local distance = entry_distance(cross, i, is_x, forward, pos, edge, far, cross_lo, cross_hi)
+    -- (two extents of 0 on the axis never overlap strictly)
+    if distance and (is_x and ws[i] or hs[i]) + size > 0 and distance >= from
+      and distance < to then
+      local inside = distance < 0
+      add_crossing(world, cross, i, not inside and side or nil,
+        (inside and passed or passed + distance) / path)
     end
   end
 end
@@ -238,17 +246,9 @@ local function filtered_phase(world, is_x, pos, cross, size, cross_size, delta, 
     local order, met = set.touch, 0
     -- what the path meets in this chunk, by distance along it (0: at the start)
     for i = 1, set.n do
-      local near, length, across, across_length
-      if is_x then near, length, across, across_length = xs[i], ws[i], ys[i], hs[i]
-      else near, length, across, across_length = ys[i], hs[i], xs[i], ws[i] end
-      if across < cross_end and cross < across + across_length then
-        local distance, on_path
-        if forward then
-          distance, on_path = near - edge, near < reach and near + length > pos
-        else
-          distance, on_path = pos - (near + length), near + length > reach and near < edge
-        end
-        if on_path and distance >= from and distance < to then
+      local distance = entry_distance(set, i, is_x, forward, pos, edge, reach, cross, cross_end)
+      if distance then
+        if distance >= from and distance < to then
           local key = distance > 0 and distance or 0
           keys[i] = key
           local j = met
