@@ -1,0 +1,18 @@
+-- The play-through: every coin, every enemy shot, the goal, no death. Frames at 1/60 s;
+-- each line holds its keys from its first frame to its last.
+return {
+  frames = 760,
+  expect = {coins = "all", kills = "all", deaths = 0, goal = true},
+  input = {
+    {1, 309, "right"},
+    {96, 110, "jump"},      -- over the first pit
+    {131, 140, "shoot"},    -- the first enemy, walking back from the ledge
+    {199, 212, "jump"},     -- up through the oneway platform, onto it (a coin)
+    {224, 238, "jump"},     -- onto the wall, and down the other side
+    {298, 302, "jump"},     -- a hop onto the first moving platform, waiting at the edge
+    {385, 415, "right"},    -- it waits at the far end: over to the second one
+    {385, 395, "jump"},
+    {405, 470, "shoot"},    -- the two enemies ahead
+    {500, 2000, "right"},   -- off the platform, coins, the switch, through the door
+  },
+}
