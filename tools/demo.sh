@@ -1,7 +1,8 @@
 #!/bin/sh
 # tools/demo.sh [OUT_DIR]: runs every scene of the LÖVE lab (examples/demo) under every
-# method in scripted mode, under a virtual X display, and checks each run's verdict
-# (its exit status) and that its screenshot is a real picture (tools/png_check.py).
+# method in scripted mode, and the platformer's input scripts (examples/platformer),
+# under a virtual X display, and checks each run's verdict (its exit status) and that its
+# screenshot is a real picture (tools/png_check.py).
 # Ends with "demo: N passed, N failed". Installs love, xvfb and python3 when missing.
 set -u
 cd "$(dirname "$0")/.." || exit 2
@@ -18,11 +19,12 @@ failed=0
 methods=$(lua5.4 -e 'package.path = "./src/?.lua;./src/?/init.lua;" .. package.path
   print(table.concat(require("budge").METHODS, " "))') || exit 2
 # run NAME ARGS...: one scripted run; passes when it exits 0 and its PNG is a picture
+# (GAME: the folder, examples/demo unless set)
 run() {
   name=$1; shift
   png="$out/$name.png"
   rm -f "$png"
-  if timeout 60 love examples/demo "$@" --screenshot "$png" 2>"$out/stderr.log" \
+  if timeout 60 love "${GAME:-examples/demo}" "$@" --screenshot "$png" 2>"$out/stderr.log" \
       && python3 tools/png_check.py "$png" >"$out/check.log"; then
     passed=$((passed + 1))
   else
@@ -38,5 +40,9 @@ for scene in platformer corners speed fatcross crowd; do
 done
 # the interactive keys, pressed by the script: methods, scenes, restart, help
 run keys --scene 1 --method seed --keys "20:m,40:m,60:3,80:tab,100:r,120:h,140:5" --frames 220
+# the platformer's two input scripts: their verdicts and their pictures
+for script in playthrough deaths; do
+  GAME=examples/platformer run "platformer-$script" --script "$script"
+done
 echo "demo: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -51,15 +51,22 @@ run_busted() { # label, interpreter and its flags
 for lua in $INTERPRETERS; do run_busted "$lua" "$lua"; done
 run_busted "luajit -joff" luajit -joff
 
-echo "== the LÖVE lab, scripted (every scene under every method)"
+echo "== the platformer, headless (both input scripts on every interpreter)"
+for lua in $INTERPRETERS; do
+  for script in playthrough deaths; do
+    check "platformer $script ($lua)" "$lua" examples/platformer/headless.lua --script "$script"
+  done
+done
+
+echo "== the LÖVE lab and the platformer, scripted (every scene under every method)"
 demo_out=$(mktemp -d)
 sh tools/demo.sh "$demo_out" | tee /tmp/budge-demo.log | grep -v '^PASS'
 line=$(grep -E '^demo: [0-9]+ passed, [0-9]+ failed' /tmp/budge-demo.log | tail -n 1)
 if [ -n "$line" ]; then
-  record "lab scripted runs" "$(echo "$line" | sed -E 's/demo: ([0-9]+) passed.*/\1/')" \
+  record "LÖVE scripted runs" "$(echo "$line" | sed -E 's/demo: ([0-9]+) passed.*/\1/')" \
     "$(echo "$line" | sed -E 's/.* ([0-9]+) failed/\1/')"
 else
-  record "lab scripted runs" 0 1
+  record "LÖVE scripted runs" 0 1
 fi
 rm -rf "$demo_out"
 

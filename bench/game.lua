@@ -1,0 +1,79 @@
+-- bench/game.lua: the example platformer as the measure of speed in a game.
+--
+--   luajit bench/game.lua [--frames 5000] [--runs 3]
+--
+-- Plays examples/platformer's play-through script headless (the level starts again each
+-- time it is won) for F frames. On LuaJIT three ways, each run in its own fresh process,
+-- interleaved: the default JIT budget, a raised one (maxtrace=4000, maxmcode=4096), and
+-- the JIT off. Prints us per frame (median of the runs), the traces and KB of machine code
+-- alive at the end, and how many times LuaJIT flushed every trace (its budget ran out).
+-- On another interpreter, the one way it has.
+package.path = "./examples/platformer/?.lua;./src/?.lua;./src/?/init.lua;./?.lua;"
+  .. package.path
+local common = require("bench.common")
+
+local options = common.options(arg, {frames = 5000, runs = 3, way = ""})
+local jit = rawget(_G, "jit")
+
+local function play()
+  local game = require("game")
+  local level = dofile("examples/platformer/level.lua")
+  local script = dofile("examples/platformer/scripts/playthrough.lua")
+  local input = game.player_input(script.input)
+  local run, start = game.new(level), 0
+  local began = os.clock()
+  for frame = 1, options.frames do
+    if run.goal then run, start = game.new(level), frame - 1 end
+    run:update(input(frame - start))
+  end
+  return (os.clock() - began) * 1e6 / options.frames
+end
+
+if options.way ~= "" then -- one run of one way
+  local flushes = 0
+  if jit then
+    if options.way == "large" then jit.opt.start("maxtrace=4000", "maxmcode=4096") end
+    if options.way == "off" then jit.off() end
+    jit.attach(function(what) if what == "flush" then flushes = flushes + 1 end end, "trace")
+  end
+  local us = play()
+  local traces, bytes = 0, 0
+  if jit then
+    local util = require("jit.util")
+    for trace = 1, 4000 do
+      local mcode = util.tracemc(trace)
+      if mcode then traces, bytes = traces + 1, bytes + #mcode end
+    end
+  end
+  print(("%.1f %d %.0f %d"):format(us, traces, bytes / 1024, flushes))
+  os.exit(0)
+end
+
+local interpreter = arg[-1] or "lua"
+local ways = jit and {"default", "large", "off"} or {"plain"}
+local results = {}
+for _ = 1, options.runs do
+  for _, way in ipairs(ways) do
+    local command = ("%s bench/game.lua --way %s --frames %d"):format(interpreter, way,
+      options.frames)
+    local pipe = assert(io.popen(command))
+    local line = pipe:read("*l")
+    pipe:close()
+    local values = {}
+    for number in (line or ""):gmatch("%S+") do values[#values + 1] = tonumber(number) end
+    assert(#values == 4, "no figures from: " .. command)
+    results[way] = results[way] or {{}, {}, {}, {}}
+    for k = 1, 4 do table.insert(results[way][k], values[k]) end
+  end
+end
+print(("bench/game.lua on %s, %s: the platformer's play-through, %d frames, median of %d "
+  .. "fresh processes"):format(common.interpreter(), common.machine(), options.frames,
+  options.runs))
+print(("%-22s %12s %8s %10s %8s"):format("way", "us/frame", "traces", "mcode KB", "flushes"))
+local names = {default = "JIT, default budget", large = "JIT, raised budget", off = "JIT off",
+  plain = "interpreter"}
+for _, way in ipairs(ways) do
+  local r = results[way]
+  print(("%-22s %12.1f %8.0f %10.0f %8.0f"):format(names[way], common.median(r[1]),
+    common.median(r[2]), common.median(r[3]), common.median(r[4])))
+end
