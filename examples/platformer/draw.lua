@@ -54,8 +54,9 @@ function draw.frame(gfx, run, width, height)
   gfx.setColor(0, 0, 0, 0.6)
   gfx.rectangle("fill", 0, 0, width, 22)
   gfx.setColor(1, 1, 1)
-  gfx.print(("coins %d/%d   enemies %d/%d   deaths %d%s"):format(run.coins, run.total_coins,
-    run.kills, run.total_enemies, run.deaths, run.goal and "   GOAL!" or ""), 8, 4)
+  gfx.print(("score %d   coins %d/%d   enemies %d/%d   deaths %d%s"):format(
+    run.coins * 10 + run.kills * 50, run.coins, run.total_coins, run.kills, run.total_enemies,
+    run.deaths, run.goal and "   GOAL!" or ""), 8, 4)
 end
 
 return draw

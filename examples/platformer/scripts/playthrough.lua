@@ -14,5 +14,7 @@ return {
     {385, 395, "jump"},
     {405, 470, "shoot"},    -- the two enemies ahead
     {500, 2000, "right"},   -- off the platform, coins, the switch, through the door
+    {535, 548, "jump"},     -- onto the oneway ledge (a coin)
+    {562, 570, "down"},     -- and down through it
   },
 }
