@@ -6,7 +6,8 @@
 -- fixed 1/60 s, prints the one-line verdict and exits 1 when the outcome is not the one
 -- the script expects.
 local here = (arg and arg[0] or ""):match("^(.*)[/\\]") or "."
-package.path = here .. "/?.lua;" .. here .. "/../../src/?.lua;" .. here .. "/../../src/?/init.lua;"
+package.path = here .. "/?.lua;" .. here .. "/?/init.lua;" .. here .. "/../../src/?.lua;"
+  .. here .. "/../../src/?/init.lua;"
   .. package.path
 local game = require("game")
 local outcome = require("outcome")
