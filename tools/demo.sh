@@ -40,8 +40,8 @@ for scene in platformer corners speed fatcross crowd; do
 done
 # the interactive keys, pressed by the script: methods, scenes, restart, help
 run keys --scene 1 --method seed --keys "20:m,40:m,60:3,80:tab,100:r,120:h,140:5" --frames 220
-# the platformer's two input scripts: their verdicts and their pictures
-for script in playthrough deaths; do
+# the platformer's input scripts: their verdicts and their pictures
+for script in playthrough deaths checkpoint; do
   GAME=examples/platformer run "platformer-$script" --script "$script"
 done
 echo "demo: $passed passed, $failed failed"

@@ -51,9 +51,9 @@ run_busted() { # label, interpreter and its flags
 for lua in $INTERPRETERS; do run_busted "$lua" "$lua"; done
 run_busted "luajit -joff" luajit -joff
 
-echo "== the platformer, headless (both input scripts on every interpreter)"
+echo "== the platformer, headless (its input scripts on every interpreter)"
 for lua in $INTERPRETERS; do
-  for script in playthrough deaths; do
+  for script in playthrough deaths checkpoint; do
     check "platformer $script ($lua)" "$lua" examples/platformer/headless.lua --script "$script"
   done
 done

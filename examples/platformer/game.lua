@@ -34,7 +34,16 @@ function game.new(level)
   local self = setmetatable({world = budge.new_world({cell_size = 64}), frame = 0,
     coins = 0, total_coins = 0, kills = 0, total_enemies = 0, deaths = 0, causes = {},
     goal = false, inside = 0, enemies = {}, bullets = {}, platforms = {}, level = level,
-    cooldown = 0, out = {}, out_t = {}, contacts = {}}, Game)
+    cooldown = 0, out = {}, out_t = {}, contacts = {}, drops = 0, coyote_jumps = 0,
+    buffered_jumps = 0}, Game)
+  -- the query filters, made once: what an enemy can stand on, and what no actor may be in
+  self.is_floor = function(item)
+    return item == self.ground or item == self.ledges or item.kind == "door"
+  end
+  self.is_solid = function(item)
+    return item == self.ground or item.kind == "platform" or item.kind == "door"
+      or item.kind == "crusher"
+  end
   local world = self.world
   for _, layer in ipairs(level.layers) do
     if layer.type == "tilelayer" and layer.name == "ground" then
@@ -89,15 +98,19 @@ end
 -- while Down is held), enemies are crossed (world:contacts reports them), bullets and
 -- the player's own kind are ignored; sensors are crossed whatever this returns.
 function Game:player_meets(other, id)
-  if other == self.ledges and id == 2 and self.input.down then return nil end
+  if other == self.ledges and id == 2 and self.input.down then
+    self.drops = self.drops + 1 -- (asked about a ledge tile it then falls through)
+    return nil
+  end
   if other.kind == "enemy" then return "cross" end
   if other.kind == "bullet" then return nil end
   return "slide"
 end
 
--- An enemy's filter: it walks on the ground, turns at walls and at other enemies.
+-- An enemy's filter: it walks on the ground, turns at walls and at other enemies (it
+-- stops against them, "slide": a "bounce" would carry it on past a ledge it just turned at).
 function Game:enemy_meets(other)
-  if other.kind == "enemy" then return "bounce" end
+  if other.kind == "enemy" then return "slide" end -- (stops where the other stands; turns)
   if other.kind == "bullet" or other.kind == "player" or other == self.player then return nil end
   if other.kind == "coin" or other.kind == "spikes" or other.kind == "checkpoint"
     or other.kind == "switch" or other.kind == "goal" then
@@ -119,12 +132,14 @@ end
 function Game:respawn()
   local player, world = self.player, self.world
   player.x, player.y = self.checkpoint_x, self.checkpoint_y
+  self.respawn_x = player.x
   player.vx, player.vy = 0, 0
   world:update(player)
   self.coyote, self.buffer, self.grounded = 0, 0, false
 end
 
 function Game:die(cause)
+  if self.dead then return end -- (one death a frame, whatever else touches the player)
   self.deaths = self.deaths + 1
   self.causes[#self.causes + 1] = cause
   self.dead = cause
@@ -134,8 +149,7 @@ end
 function Game:ground_ahead(enemy)
   local foot = enemy.direction > 0 and enemy.x + enemy.width or enemy.x - 2
   local _, n = self.world:query_sweep(foot, enemy.y + enemy.height - 1, 2, 1, 0, 4, self.out,
-    self.out_t, function(item) return item == self.ground or item == self.ledges
-      or item.kind == "door" end)
+    self.out_t, self.is_floor)
   return n > 0
 end
 
@@ -154,10 +168,11 @@ end
 function Game:update_solids()
   local world = self.world
   for _, platform in ipairs(self.platforms) do
-    -- 60 frames waiting at each end, 64 frames of travel between them
-    platform.clock = (platform.clock + 1) % 248
+    -- 60 frames waiting at each end, |range| frames of travel between them at 1 px a frame
+    local travel = math.abs(platform.range)
+    platform.clock = (platform.clock + 1) % (2 * (60 + travel))
     local c, step = platform.clock, 0
-    if c >= 60 and c < 124 then step = 1 elseif c >= 184 then step = -1 end
+    if c >= 60 and c < 60 + travel then step = 1 elseif c >= 120 + travel then step = -1 end
     if platform.range < 0 then step = -step end
     if step ~= 0 then world:move_solid(platform, step, 0) end
   end
@@ -174,8 +189,12 @@ function Game:update_player(input)
   local player, world = self.player, self.world
   player.vx = (input.right and RUN or 0) - (input.left and RUN or 0)
   if player.vx ~= 0 then player.facing = player.vx > 0 and 1 or -1 end
-  if input.jump and not self.jump_held then self.buffer = BUFFER end
+  local pressed = input.jump and not self.jump_held
+  if pressed then self.buffer = BUFFER end
   if self.buffer > 0 and self.coyote > 0 then
+    -- (counted: a jump off the ground's edge after leaving it, and one pressed before landing)
+    if not self.grounded then self.coyote_jumps = self.coyote_jumps + 1 end
+    if not pressed then self.buffered_jumps = self.buffered_jumps + 1 end
     player.vy, self.buffer, self.coyote = JUMP, 0, 0
   end
   if not input.jump and player.vy < CUT then player.vy = CUT end -- a short hop
@@ -186,6 +205,7 @@ function Game:update_player(input)
   self.grounded = false
   for i = 1, n do
     local hit, other = hits[i], hits[i].other
+    if self.dead then break end
     if hit.response == "cross" then
       if other.kind == "coin" and world:has(other) then
         world:remove(other)
@@ -229,7 +249,17 @@ function Game:update_bullets()
     for k = 1, n do
       if hits[k].response == "touch" then stopped = true end
     end
-    if stopped then
+    -- (taken out after world:contacts: a bullet that crossed an enemy on its way into the
+    -- wall still kills it)
+    bullet.stopped = stopped
+  end
+end
+
+function Game:remove_stopped_bullets()
+  local world = self.world
+  for i = #self.bullets, 1, -1 do
+    local bullet = self.bullets[i]
+    if bullet.stopped then
       world:remove(bullet)
       table.remove(self.bullets, i)
     end
@@ -263,18 +293,15 @@ end
 
 -- Whether any actor ended the frame inside the ground or a solid (never, if budge is right).
 function Game:check_inside()
-  local world = self.world
-  local function solid(item)
-    return item == self.ground or item.kind == "platform" or item.kind == "door"
-      or item.kind == "crusher"
-  end
-  local actors = {self.player}
-  for i = 1, #self.enemies do actors[#actors + 1] = self.enemies[i] end
-  for i = 1, #actors do
-    local a = actors[i]
+  local world, solid = self.world, self.is_solid
+  local function inside(a)
     local _, n = world:query_rect(a.x, a.y, a.width, a.height, self.out, solid)
-    if n > 0 then self.inside = self.inside + 1 end
+    return n > 0
   end
+  local any = inside(self.player)
+  for i = 1, #self.enemies do any = inside(self.enemies[i]) or any end
+  for i = 1, #self.bullets do any = inside(self.bullets[i]) or any end
+  if any then self.inside = self.inside + 1 end
 end
 
 ---One frame of the game at 1/60 s. `input` holds left, right, jump, down, shoot.
@@ -289,6 +316,7 @@ function Game:update(input)
     self:update_enemies()
     self:update_bullets()
     self:resolve_contacts()
+    self:remove_stopped_bullets()
     if self.player.y > self.level.height * self.level.tileheight then self:die("fell") end
     if self.dead then self:respawn() end
   end
@@ -298,9 +326,11 @@ end
 ---The one-line verdict of a run.
 ---@return string
 function Game:verdict()
-  return ("frames %d coins %d/%d kills %d/%d deaths %d (%s) goal %s inside %d"):format(
-    self.frame, self.coins, self.total_coins, self.kills, self.total_enemies, self.deaths,
-    table.concat(self.causes, ","), tostring(self.goal), self.inside)
+  return ("frames %d coins %d/%d kills %d/%d deaths %d (%s) goal %s inside %d drops %d "
+    .. "coyote %d buffered %d respawn %s"):format(self.frame, self.coins, self.total_coins,
+    self.kills, self.total_enemies, self.deaths, table.concat(self.causes, ","),
+    tostring(self.goal), self.inside, self.drops, self.coyote_jumps, self.buffered_jumps,
+    tostring(self.respawn_x))
 end
 
 ---Reads an input script: a list of {first frame, last frame, "keys"}; returns a function

@@ -5,6 +5,7 @@ return {
   version = "1.10", luaversion = "5.1", orientation = "orthogonal", renderorder = "right-down",
   width = 100, height = 21, tilewidth = 16, tileheight = 16,
   properties = {},
+  tilesets = {}, -- (the game draws rectangles: no tileset images)
   layers = {
     {
       type = "tilelayer", name = "ground", x = 0, y = 0, width = 100, height = 21,

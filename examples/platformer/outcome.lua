@@ -13,7 +13,8 @@ end
 
 ---Whether a finished run is what the script expects; returns false and why when not.
 ---@param run table the game
----@param expect table {coins =, kills =, deaths =, goal =, causes =}
+---@param expect table {coins =, kills =, deaths =, goal =, causes =, respawn =, and minimums
+---of drops (frames dropping through a ledge), coyote and buffered jumps}
 ---@return boolean ok, string? why
 function outcome.check(run, expect)
   if run.inside > 0 then return false, "an actor ended a frame inside a solid" end
@@ -24,6 +25,10 @@ function outcome.check(run, expect)
   if expect.causes and table.concat(run.causes, ",") ~= expect.causes then
     return false, "causes of death"
   end
+  if expect.respawn and run.respawn_x ~= expect.respawn then return false, "respawn point" end
+  if (expect.drops or 0) > run.drops then return false, "drop-through" end
+  if (expect.coyote or 0) > run.coyote_jumps then return false, "coyote jumps" end
+  if (expect.buffered or 0) > run.buffered_jumps then return false, "buffered jumps" end
   return true
 end
 
