@@ -50,4 +50,34 @@ function common.options(args, defaults)
   return options
 end
 
+---Runs `command(way)` (a shell command printing one line of `fields` numbers) in a fresh
+---process for each way, `runs` times, the ways interleaved, and returns, for each way,
+---the list of each field's values. On LuaJIT what one configuration compiles changes
+---another's figures: each in its own process.
+---@param ways string[]
+---@param runs integer
+---@param fields integer
+---@param command fun(way: string): string
+---@return table<string, number[][]>
+function common.fresh_runs(ways, runs, fields, command)
+  local results = {}
+  for _ = 1, runs do
+    for _, way in ipairs(ways) do
+      local line = command(way)
+      local pipe = assert(io.popen(line))
+      local output = pipe:read("*l")
+      pipe:close()
+      local values = {}
+      for number in (output or ""):gmatch("%S+") do values[#values + 1] = tonumber(number) end
+      assert(#values == fields, "no figures from: " .. line)
+      results[way] = results[way] or {}
+      for k = 1, fields do
+        results[way][k] = results[way][k] or {}
+        table.insert(results[way][k], values[k])
+      end
+    end
+  end
+  return results
+end
+
 return common

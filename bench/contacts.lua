@@ -214,22 +214,11 @@ end
 local interpreter = arg[-1] or "lua"
 local has_bump = pcall(require, "bump")
 local ways = has_bump and {"budge", "bump"} or {"budge"}
-local results = {}
-for _ = 1, options.runs do
-  for _, way in ipairs(ways) do
-    local command = ("%s bench/contacts.lua --way %s --frames %d --seed %d --walkers %d "
-      .. "--coins %d --bullets %d --budget %s"):format(interpreter, way, options.frames,
-      options.seed, options.walkers, options.coins, options.bullets, options.budget)
-    local pipe = assert(io.popen(command))
-    local line = pipe:read("*l")
-    pipe:close()
-    local values = {}
-    for number in (line or ""):gmatch("%S+") do values[#values + 1] = tonumber(number) end
-    assert(#values == 4, "no figures from: " .. command)
-    results[way] = results[way] or {{}, {}, {}, {}}
-    for k = 1, 4 do table.insert(results[way][k], values[k]) end
-  end
-end
+local results = common.fresh_runs(ways, options.runs, 4, function(way)
+  return ("%s bench/contacts.lua --way %s --frames %d --seed %d --walkers %d --coins %d "
+    .. "--bullets %d --budget %s"):format(interpreter, way, options.frames, options.seed,
+    options.walkers, options.coins, options.bullets, options.budget)
+end)
 print(("bench/contacts.lua on %s (%s JIT budget), %s: %d walkers, %d coin sensors, %d "
   .. "bullets at 40 px/frame, %d frames, median of %d fresh processes"):format(
   common.interpreter(), options.budget, common.machine(), options.walkers, options.coins,

@@ -51,21 +51,9 @@ end
 
 local interpreter = arg[-1] or "lua"
 local ways = jit and {"default", "large", "off"} or {"plain"}
-local results = {}
-for _ = 1, options.runs do
-  for _, way in ipairs(ways) do
-    local command = ("%s bench/game.lua --way %s --frames %d"):format(interpreter, way,
-      options.frames)
-    local pipe = assert(io.popen(command))
-    local line = pipe:read("*l")
-    pipe:close()
-    local values = {}
-    for number in (line or ""):gmatch("%S+") do values[#values + 1] = tonumber(number) end
-    assert(#values == 4, "no figures from: " .. command)
-    results[way] = results[way] or {{}, {}, {}, {}}
-    for k = 1, 4 do table.insert(results[way][k], values[k]) end
-  end
-end
+local results = common.fresh_runs(ways, options.runs, 4, function(way)
+  return ("%s bench/game.lua --way %s --frames %d"):format(interpreter, way, options.frames)
+end)
 print(("bench/game.lua on %s, %s: the platformer's play-through, %d frames, median of %d "
   .. "fresh processes"):format(common.interpreter(), common.machine(), options.frames,
   options.runs))
