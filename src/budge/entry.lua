@@ -97,7 +97,6 @@ function entry.flush(self)
     else actors.remove(self, record) end -- an actor or a sensor
   end
   self._n_pending, self._pending_actors, self._pending_layers = 0, 0, 0
-  self._pending_sensors = 0
 end
 
 ---Runs `body(self, a, ..., e)` while `busy` names the callback it may call: world:remove

@@ -114,7 +114,6 @@ local world = {}
 ---@field package _n_pending integer
 ---@field package _pending_actors integer how many of them are actors
 ---@field package _pending_layers integer and tile layers
----@field package _pending_sensors integer and sensors
 ---@field package _frame_order budge.Record[] actors and sensors, by the left of their frame's sweep
 ---@field package _frame_lists budge.Record[][] the actor list and the sensor list
 ---@field package _frame_stamp integer counts world:contacts calls
@@ -164,7 +163,6 @@ function world.new_world(opts)
     _near = {}, _crushed = {}, _n_crushed = 0, _crush_stamp = 0,
     _crush_lists = {}, _crush_depth = 0,
     _busy = false, _pending = {}, _n_pending = 0, _pending_actors = 0, _pending_layers = 0,
-    _pending_sensors = 0,
     _frame_order = {}, _frame_lists = false, _frame_stamp = 0, _contact_pool = {},
     _contact_sorted = {}, _n_contacts = 0,
   }, World)
@@ -268,8 +266,7 @@ function World:remove(item)
     self._pending[n] = record
     self._n_pending = n
     if kind == ACTOR then self._pending_actors = self._pending_actors + 1
-    elseif kind == TILES then self._pending_layers = self._pending_layers + 1
-    elseif kind == SENSOR then self._pending_sensors = self._pending_sensors + 1 end
+    elseif kind == TILES then self._pending_layers = self._pending_layers + 1 end
     return
   end
   if kind == SOLID then
