@@ -43,6 +43,7 @@ build = {
     ["budge.world"] = "src/budge/world.lua",
     ["budge.tiles"] = "src/budge/tiles.lua",
     ["budge.advise"] = "src/budge/advise.lua",
+    ["budge.bump"] = "src/budge/bump.lua",
   },
 }
 test = {

@@ -51,6 +51,32 @@ run_busted() { # label, interpreter and its flags
 for lua in $INTERPRETERS; do run_busted "$lua" "$lua"; done
 run_busted "luajit -joff" luajit -joff
 
+# bump.lua's own spec suite, unchanged, against budge.bump (README.md, "Coming from
+# bump.lua", lists the specs it does not pass and why: those are expected, any other
+# failure counts, and so does passing fewer than 51 of them).
+BUMP_SPEC_DIR=${BUMP_SPEC_DIR:-../shared/peers/bump.lua-3.1.7/spec}
+echo "== bump.lua's spec suite against budge.bump ($BUMP_SPEC_DIR)"
+if [ -d "$BUMP_SPEC_DIR" ]; then
+  expected=$(awk '/^### bump.lua.s own spec suite/ {on = 1; next} /^#/ {on = 0}
+    on && /^\| `/' README.md | sed -E 's/^\| `([^`]*)`.*/\1/')
+  for lua in $INTERPRETERS; do
+    out=$("$lua" "$busted_bin" --helper=tools/bump_helper.lua -o TAP "$BUMP_SPEC_DIR" 2>&1)
+    ok=$(printf '%s\n' "$out" | grep -c '^ok ')
+    bad=0
+    names=$(printf '%s\n' "$out" | grep '^not ok ' | sed -E 's/^not ok [0-9]+ - //')
+    if [ -n "$names" ]; then
+      bad=$(printf '%s\n' "$names" | while IFS= read -r name; do
+        printf '%s\n' "$expected" | grep -qxF "$name" || echo "unexpected: $name"
+      done | tee /dev/stderr | grep -c '^unexpected')
+    fi
+    if [ "$ok" -lt 51 ]; then echo "only $ok of bump's specs passed on $lua"; bad=$((bad + 1)); fi
+    echo "  $lua: $ok passed, $(printf '%s\n' "$names" | grep -c .) expected failures listed in README.md"
+    record "bump's specs ($lua)" "$ok" "$bad"
+  done
+else
+  echo "skipped: no bump.lua spec suite at $BUMP_SPEC_DIR (set BUMP_SPEC_DIR)"
+fi
+
 echo "== the platformer, headless (its input scripts on every interpreter)"
 for lua in $INTERPRETERS; do
   for script in playthrough deaths checkpoint; do

@@ -33,7 +33,7 @@ local format, error, type, setmetatable = string.format, error, type, setmetatab
 local floor, ceil, abs, min, max = math.floor, math.ceil, math.abs, math.min, math.max
 
 local bump = {
-  _VERSION = "0.1.0", -- budge's version; the API is bump.lua 3.1.7's
+  _VERSION = "0.1.0", -- budge's version (a spec ties them); the API is bump.lua 3.1.7's
   _DESCRIPTION = "bump.lua 3.1.7's API on budge's engine",
   _LICENSE = "MIT",
 }
@@ -239,29 +239,46 @@ local ENGINE = {[touch_response] = "touch", [cross_response] = "cross",
 ---@field package _world budge.World the budge world underneath
 ---@field package _proxies table<any, table> item -> the proxy box standing for it
 ---@field package _list table[] the proxies, unordered (a removal moves the last into the gap)
----@field package _engine table<string, string|false> response name -> the engine's ("touch" for a custom one)
+---@field package _engine table<string, string> response name -> the engine's response,
+---or "custom" for one the front end runs itself (the engine stops there: "touch")
+---@field package _filter function the running move's filter (the default: "slide")
+---@field package _translate function the filter budge's engine asks (made once per world)
+---@field package _custom table<table, string> proxy -> the custom response chosen for it
+---@field package _custom_list table[] those proxies, to clear after the leg
+---@field package _n_custom integer
+---@field package _visited table<table, boolean> what the legs before a custom one met
+---@field package _visited_list table[]
+---@field package _n_visited integer
+---@field package _move_cols table[] world:move's list (reused), its records from _move_pool
+---@field package _move_pool table[]
+---@field package _check_cols table[] world:check's
+---@field package _check_pool table[]
+---@field package _project_cols table[] world:project's
+---@field package _project_pool table[]
+---@field package _found table[] the budge world's query output (scratch)
 local World = {}
 World.__index = World
 
 -- The default filter: every item slides on every other.
 local function default_filter() return "slide" end
 
--- Errors at the caller of a front-end method (level 3 from here) for a bad argument.
-local function check_finite(value, name)
+-- The checks of an argument: an error at `level` (as error() counts from the check: 3
+-- is the caller of the method that calls the check).
+local function check_finite(value, name, level)
   if not is_finite(value) then
-    error(format("%s must be a finite number, got %s", name, describe(value)), 4)
+    error(format("%s must be a finite number, got %s", name, describe(value)), level)
   end
 end
 
-local function check_positive(value, name)
+local function check_positive(value, name, level)
   if not is_finite(value) or value <= 0 then
-    error(format("%s must be a finite number > 0, got %s", name, describe(value)), 4)
+    error(format("%s must be a finite number > 0, got %s", name, describe(value)), level)
   end
 end
 
 local function check_filter(filter)
   if filter ~= nil and type(filter) ~= "function" then
-    error(format("filter must be a function or nil, got %s", describe(filter)), 4)
+    error(format("filter must be a function or nil, got %s", describe(filter)), 3)
   end
 end
 
@@ -288,10 +305,10 @@ end
 
 -- The checks of a rectangle given to add, update and the queries (at their caller).
 local function check_rect(self, x, y, w, h)
-  check_finite(x, "x")
-  check_finite(y, "y")
-  check_positive(w, "w")
-  check_positive(h, "h")
+  check_finite(x, "x", 4)
+  check_finite(y, "y", 4)
+  check_positive(w, "w", 4)
+  check_positive(h, "h", 4)
   check_span(self._world, x, w, "x", "the rectangle", 4)
   check_span(self._world, y, h, "y", "the rectangle", 4)
 end
@@ -301,7 +318,7 @@ end
 ---@return budge.BumpWorld
 function bump.newWorld(cell_size)
   if cell_size == nil then cell_size = 64 end
-  check_positive(cell_size, "cellSize")
+  check_positive(cell_size, "cellSize", 3)
   local self = setmetatable({
     cellSize = cell_size,
     responses = {},
@@ -346,7 +363,10 @@ function bump.newWorld(cell_size)
     end
     return response
   end
-  for name, response in pairs(bump.responses) do self:addResponse(name, response) end
+  self:addResponse("touch", touch_response)
+  self:addResponse("cross", cross_response)
+  self:addResponse("slide", slide_response)
+  self:addResponse("bounce", bounce_response)
   return self
 end
 
@@ -355,6 +375,9 @@ end
 ---bump, the collisions from there, which the front end finds itself).
 ---@param name string
 ---@param response function
+---@param name string
+---@param response fun(world: budge.BumpWorld, col: table, x: number, y: number, w: number,
+---h: number, goal_x: number, goal_y: number, filter?: function): number, number
 function World:addResponse(name, response)
   enter(self, "addResponse")
   if type(name) ~= "string" then
@@ -368,6 +391,12 @@ function World:addResponse(name, response)
 end
 
 ---world:add(item, x, y, w, h): adds any value but nil (and NaN) as an item; returns it.
+---@param item any
+---@param x number
+---@param y number
+---@param w number > 0
+---@param h number > 0
+---@return any item
 function World:add(item, x, y, w, h)
   enter(self, "add")
   if item == nil or item ~= item then
@@ -389,6 +418,7 @@ function World:add(item, x, y, w, h)
 end
 
 ---world:remove(item).
+---@param item any
 function World:remove(item)
   enter(self, "remove")
   local proxy = find_proxy(self, item)
@@ -402,6 +432,11 @@ function World:remove(item)
 end
 
 ---world:update(item, x, y, w, h): teleports it (w and h default to its own).
+---@param item any
+---@param x number
+---@param y number
+---@param w? number
+---@param h? number
 function World:update(item, x, y, w, h)
   enter(self, "update")
   local proxy = find_proxy(self, item)
@@ -579,14 +614,26 @@ local function run_move(self, proxy, goal_x, goal_y, filter, list, pool)
   return n
 end
 
+-- The goal of a move or a check: finite, and keeping the item within the world's range.
+local function check_goal(self, proxy, goal_x, goal_y)
+  check_finite(goal_x, "goalX", 4)
+  check_finite(goal_y, "goalY", 4)
+  check_span(self._world, goal_x, proxy.width, "goalX", "the item", 4)
+  check_span(self._world, goal_y, proxy.height, "goalY", "the item", 4)
+end
+
 ---world:check(item, goalX, goalY, filter): where the item would end moving toward the
 ---goal, and its collisions, without moving it. The list and its records belong to the
 ---world and are reused by its next check.
+---@param item any
+---@param goal_x number
+---@param goal_y number
+---@param filter? fun(item: any, other: any): string|false|nil
+---@return number x, number y, table[] cols, integer len
 function World:check(item, goal_x, goal_y, filter)
   enter(self, "check")
   local proxy = find_proxy(self, item)
-  check_finite(goal_x, "goalX")
-  check_finite(goal_y, "goalY")
+  check_goal(self, proxy, goal_x, goal_y)
   check_filter(filter)
   local x, y = proxy.x, proxy.y
   local n = run_move(self, proxy, goal_x, goal_y, filter, self._check_cols, self._check_pool)
@@ -599,11 +646,15 @@ end
 ---other item as the filter chooses (default: "slide" on everything); returns where it
 ---ended and its collisions. The list and its records belong to the world and are reused
 ---by its next move.
+---@param item any
+---@param goal_x number
+---@param goal_y number
+---@param filter? fun(item: any, other: any): string|false|nil
+---@return number x, number y, table[] cols, integer len
 function World:move(item, goal_x, goal_y, filter)
   enter(self, "move")
   local proxy = find_proxy(self, item)
-  check_finite(goal_x, "goalX")
-  check_finite(goal_y, "goalY")
+  check_goal(self, proxy, goal_x, goal_y)
   check_filter(filter)
   local n = run_move(self, proxy, goal_x, goal_y, filter, self._move_cols, self._move_pool)
   local record = self._world._records[proxy]
@@ -637,13 +688,22 @@ end
 ---with the filter's response as each one's type; nothing moves and no response runs.
 ---`item` need not be in the world (it is left out when it is). The list and its records
 ---belong to the world and are reused by its next project.
+---@param item any
+---@param x number
+---@param y number
+---@param w number
+---@param h number
+---@param goal_x? number
+---@param goal_y? number
+---@param filter? fun(item: any, other: any): string|false|nil
+---@return table[] cols, integer len
 function World:project(item, x, y, w, h, goal_x, goal_y, filter)
   enter(self, "project")
   check_rect(self, x, y, w, h)
   if goal_x == nil then goal_x = x end
   if goal_y == nil then goal_y = y end
-  check_finite(goal_x, "goalX")
-  check_finite(goal_y, "goalY")
+  check_finite(goal_x, "goalX", 3)
+  check_finite(goal_y, "goalY", 3)
   check_filter(filter)
   filter = filter or default_filter
   local left, top = min(x, goal_x), min(y, goal_y)
@@ -691,10 +751,14 @@ end
 
 ---world:queryPoint(x, y, filter): the items strictly containing the point (an edge is
 ---outside), in the order they were added; a new list.
+---@param x number
+---@param y number
+---@param filter? fun(item: any): any
+---@return any[] items, integer len
 function World:queryPoint(x, y, filter)
   enter(self, "queryPoint")
-  check_finite(x, "x")
-  check_finite(y, "y")
+  check_finite(x, "x", 3)
+  check_finite(y, "y", 3)
   check_filter(filter)
   local found, count = self._world:query_point(x, y, self._found)
   return items_of(found, count, filter)
@@ -702,6 +766,12 @@ end
 
 ---world:queryRect(x, y, w, h, filter): the items overlapping the rectangle (strictly),
 ---in the order they were added; a new list.
+---@param x number
+---@param y number
+---@param w number
+---@param h number
+---@param filter? fun(item: any): any
+---@return any[] items, integer len
 function World:queryRect(x, y, w, h, filter)
   enter(self, "queryRect")
   check_rect(self, x, y, w, h)
@@ -713,17 +783,28 @@ end
 -- The proxies the segment passes through (strictly), nearest first, with where it enters
 -- and leaves each (fractions of it, within 0 and 1), into the world's scratch.
 local function segment_hits(self, x1, y1, x2, y2)
-  check_finite(x1, "x1")
-  check_finite(y1, "y1")
-  check_finite(x2, "x2")
-  check_finite(y2, "y2")
-  local found, count = self._world:query_segment(x1, y1, x2, y2, self._found)
+  check_finite(x1, "x1", 4)
+  check_finite(y1, "y1", 4)
+  check_finite(x2, "x2", 4)
+  check_finite(y2, "y2", 4)
+  local w = self._world
+  check_span(w, x1, 0, "x1", "the segment", 4)
+  check_span(w, y1, 0, "y1", "the segment", 4)
+  check_span(w, x2, 0, "x2", "the segment", 4)
+  check_span(w, y2, 0, "y2", "the segment", 4)
+  local found, count = w:query_segment(x1, y1, x2, y2, self._found)
   return found, count
 end
 
 ---world:querySegment(x1, y1, x2, y2, filter): the items the segment passes through
 ---(strictly: touching an edge or a corner is not), in the order it meets them (then in
 ---the order they were added); a new list.
+---@param x1 number
+---@param y1 number
+---@param x2 number
+---@param y2 number
+---@param filter? fun(item: any): any
+---@return any[] items, integer len
 function World:querySegment(x1, y1, x2, y2, filter)
   enter(self, "querySegment")
   check_filter(filter)
@@ -734,6 +815,12 @@ end
 ---world:querySegmentWithCoords(x1, y1, x2, y2, filter): querySegment's items, each as
 ---{item =, ti1 =, ti2 =, x1 =, y1 =, x2 =, y2 =}: the fractions of the segment where it
 ---enters and leaves the item's rectangle (within 0 and 1), and those points; a new list.
+---@param x1 number
+---@param y1 number
+---@param x2 number
+---@param y2 number
+---@param filter? fun(item: any): any
+---@return table[] infos, integer len
 function World:querySegmentWithCoords(x1, y1, x2, y2, filter)
   enter(self, "querySegmentWithCoords")
   check_filter(filter)
@@ -761,6 +848,8 @@ end
 
 ---world:hasItem(item): true when the value is an item of this world (any value: nil
 ---and nan are never items).
+---@param item any
+---@return boolean
 function World:hasItem(item)
   if item == nil or item ~= item then return false end
   return self._proxies[item] ~= nil
@@ -772,6 +861,7 @@ local function added_before(a, b)
 end
 
 ---world:getItems(): a new list of the items, in the order they were added, and its length.
+---@return any[] items, integer len
 function World:getItems()
   enter(self, "getItems")
   local list = self._list
@@ -783,11 +873,14 @@ function World:getItems()
 end
 
 ---world:countItems(): how many items.
+---@return integer
 function World:countItems()
   return #self._list
 end
 
 ---world:getRect(item): its x, y, w, h.
+---@param item any
+---@return number x, number y, number w, number h
 function World:getRect(item)
   enter(self, "getRect")
   local proxy = find_proxy(self, item)
@@ -795,12 +888,18 @@ function World:getRect(item)
 end
 
 ---world:toWorld(cx, cy): the top left corner of the cell (1, 1 is the one at 0, 0).
+---@param cx integer
+---@param cy integer
+---@return number x, number y
 function World:toWorld(cx, cy)
   local size = self.cellSize
   return (cx - 1) * size, (cy - 1) * size
 end
 
 ---world:toCell(x, y): the cell holding the point.
+---@param x number
+---@param y number
+---@return integer cx, integer cy
 function World:toCell(x, y)
   local size = self.cellSize
   return floor(x / size) + 1, floor(y / size) + 1
@@ -808,6 +907,7 @@ end
 
 ---world:countCells(): how many cells of cellSize hold at least one item, counted now
 ---(bump counts an emptied cell until the garbage collector runs).
+---@return integer
 function World:countCells()
   enter(self, "countCells")
   local size, rows, count = self.cellSize, {}, 0

@@ -1,0 +1,517 @@
+-- budge.bump, the bump.lua-compatible front end: what bump's own spec suite (run by
+-- `make test` against it) does not cover. README.md, "Coming from bump.lua".
+local bump = require("budge.bump")
+local budge = require("budge")
+local garbage = require("fixtures.garbage")
+local random_source = require("fixtures.random")
+
+-- bump.lua 3.1.7 itself, the oracle where budge's rules and bump's agree (nil when the
+-- peer is not beside the repository)
+local function load_peer()
+  local dir = os.getenv("BUMP_PATH") or "../shared/peers/bump.lua-3.1.7"
+  local chunk = loadfile(dir .. "/bump.lua")
+  return chunk and chunk()
+end
+
+local function xy(x, y) return {x, y} end
+
+local function rects(world, list)
+  local out = {}
+  for i, item in ipairs(list) do out[i] = {world:getRect(item)} end
+  return out
+end
+
+-- A col as a comparable string, to 1e-9 (the peer computes ti and touch with other
+-- roundings).
+local function describe_col(col)
+  local function q(v) return string.format("%.9f", v) end
+  local s = string.format("%s %s n%s,%s t%s,%s ti%s m%s,%s", tostring(type(col.other) == "table"
+    and (col.other.name or col.other.id) or col.other),
+    col.type, q(col.normal.x), q(col.normal.y), q(col.touch.x), q(col.touch.y), q(col.ti),
+    q(col.move.x), q(col.move.y))
+  if col.slide then s = s .. string.format(" s%s,%s", q(col.slide.x), q(col.slide.y)) end
+  if col.bounce then s = s .. string.format(" b%s,%s", q(col.bounce.x), q(col.bounce.y)) end
+  return s
+end
+
+local function describe_move(x, y, cols, len)
+  local parts = {string.format("%.9f %.9f %d", x, y, len)}
+  for i = 1, len do parts[#parts + 1] = describe_col(cols[i]) end
+  return table.concat(parts, " | ")
+end
+
+describe("budge.bump", function()
+  it("has bump.lua 3.1.7's public API, and budge's version", function()
+    local world = bump.newWorld()
+    for _, name in ipairs({"add", "remove", "update", "move", "check", "project", "queryPoint",
+      "queryRect", "querySegment", "querySegmentWithCoords", "hasItem", "getItems",
+      "countItems", "getRect", "toWorld", "toCell", "countCells", "addResponse"}) do
+      assert.is_function(world[name], name)
+    end
+    for _, name in ipairs({"getNearestCorner", "getSegmentIntersectionIndices", "getDiff",
+      "containsPoint", "isIntersecting", "getSquareDistance", "detectCollision"}) do
+      assert.is_function(bump.rect[name], name)
+    end
+    for _, name in ipairs({"touch", "cross", "slide", "bounce"}) do
+      assert.is_function(bump.responses[name], name)
+      assert.equal(bump.responses[name], world.responses[name])
+    end
+    assert.equal(budge._VERSION, bump._VERSION)
+    assert.equal(64, world.cellSize)
+    assert.equal(16, bump.newWorld(16).cellSize)
+  end)
+
+  describe("against bump.lua 3.1.7 itself", function()
+    local peer = load_peer()
+
+    -- A random scene: 12 boxes and a mover that starts clear of them, at random (not
+    -- dyadic) places, so that an exact-corner tie (where budge's rule and bump's differ)
+    -- has probability 0.
+    local function scene(rng)
+      local boxes = {}
+      for i = 1, 12 do
+        boxes[i] = {name = "b" .. i, x = rng() * 200, y = rng() * 200, w = 4 + rng() * 40,
+          h = 4 + rng() * 40}
+      end
+      local mover
+      repeat
+        mover = {name = "m", x = rng() * 220 - 10, y = rng() * 220 - 10, w = 4 + rng() * 16,
+          h = 4 + rng() * 16}
+        local clear = true
+        for _, b in ipairs(boxes) do
+          if mover.x < b.x + b.w and b.x < mover.x + mover.w and mover.y < b.y + b.h
+            and b.y < mover.y + mover.h then clear = false end
+        end
+      until clear
+      return boxes, mover
+    end
+
+    local function build(lib, boxes, mover)
+      local world = lib.newWorld(32)
+      local items = {}
+      for i, b in ipairs(boxes) do
+        items[i] = {name = b.name}
+        world:add(items[i], b.x, b.y, b.w, b.h)
+      end
+      local m = {name = "m"}
+      world:add(m, mover.x, mover.y, mover.w, mover.h)
+      return world, m
+    end
+
+    it("moves exactly as bump.lua does (to 1e-9), with every col's fields, in 3000 random "
+      .. "scenes of slide, touch and cross", function()
+      if not peer then return pending("bump.lua 3.1.7 not found (set BUMP_PATH)") end
+      local rng = random_source.new(16)
+      local compared, collided = 0, 0
+      local filters = {
+        slide = function() return "slide" end,
+        touch = function() return "touch" end,
+        cross = function() return "cross" end,
+        mixed = function(_, other) return ({"slide", "cross", "touch"})[#other.name % 3 + 1] end,
+      }
+      local names = {"slide", "touch", "cross", "mixed"}
+      for case = 1, 3000 do
+        local boxes, mover = scene(rng)
+        local goal_x, goal_y = mover.x + (rng() - 0.5) * 160, mover.y + (rng() - 0.5) * 160
+        local filter = filters[names[case % 4 + 1]]
+        local ours, our_m = build(bump, boxes, mover)
+        local theirs, their_m = build(peer, boxes, mover)
+        local a = describe_move(ours:move(our_m, goal_x, goal_y, filter))
+        local b = describe_move(theirs:move(their_m, goal_x, goal_y, filter))
+        assert.equal(b, a, "case " .. case)
+        compared = compared + 1
+        if select(4, ours:check(our_m, goal_x + 1, goal_y)) > 0 then collided = collided + 1 end
+      end
+      assert.equal(3000, compared)
+      assert.is_true(collided > 600, "only " .. collided .. " scenes collided")
+    end)
+
+    it("projects, and answers every query, as bump.lua does (queries as sets: bump's order "
+      .. "comes from pairs), in 2000 random scenes", function()
+      if not peer then return pending("bump.lua 3.1.7 not found (set BUMP_PATH)") end
+      local rng = random_source.new(1616)
+      local function set_of(list, len)
+        local names = {}
+        for i = 1, len do names[i] = list[i].name end
+        table.sort(names)
+        return table.concat(names, ",")
+      end
+      local skipped = 0
+      for case = 1, 2000 do
+        local boxes, mover = scene(rng)
+        local ours, our_m = build(bump, boxes, mover)
+        local theirs, their_m = build(peer, boxes, mover)
+        local x, y = rng() * 200, rng() * 200
+        local x2, y2 = rng() * 200, rng() * 200
+        local w, h = 1 + rng() * 50, 1 + rng() * 50
+        assert.equal(set_of(theirs:queryRect(x, y, w, h)), set_of(ours:queryRect(x, y, w, h)))
+        assert.equal(set_of(theirs:queryPoint(x, y)), set_of(ours:queryPoint(x, y)))
+        -- (bump leaves out a box the segment lies wholly inside: a rule kept apart below)
+        local inside = false
+        for _, b in ipairs(boxes) do
+          if b.x < math.min(x, x2) and math.max(x, x2) < b.x + b.w and b.y < math.min(y, y2)
+            and math.max(y, y2) < b.y + b.h then inside = true end
+        end
+        if inside then
+          skipped = skipped + 1
+        else
+          assert.equal(set_of(theirs:querySegment(x, y, x2, y2)),
+            set_of(ours:querySegment(x, y, x2, y2)), "case " .. case)
+        end
+        -- project from the mover's clear start (it is left out of its own projection)
+        local gx, gy = mover.x + (rng() - 0.5) * 200, mover.y + (rng() - 0.5) * 200
+        local a = describe_move(0, 0, ours:project(our_m, mover.x, mover.y, mover.w,
+          mover.h, gx, gy))
+        local their_cols, their_len = theirs:project(their_m, mover.x, mover.y, mover.w,
+          mover.h, gx, gy)
+        assert.equal(describe_move(0, 0, their_cols, their_len), a, "case " .. case)
+      end
+      assert.is_true(skipped < 40, skipped .. " segments skipped")
+    end)
+  end)
+
+  describe("keeps budge's rules where bump's differ", function()
+    it("aimed exactly at a corner, lands on the top (bump slides down the side)", function()
+      local world = bump.newWorld()
+      world:add("floor", 0, 8, 8, 8)
+      world:add("mover", 10, 2, 4, 4)
+      -- its bottom left corner reaches the floor's top right corner half way, exactly
+      local x, y, cols, len = world:move("mover", 6, 6)
+      assert.same({6, 4, 1}, {x, y, len})
+      assert.same({0, -1}, {cols[1].normal.x, cols[1].normal.y})
+      assert.same({8, 4}, {cols[1].touch.x, cols[1].touch.y})
+      local peer = load_peer()
+      if peer then -- (bump's own answer, for the README's table)
+        local theirs = peer.newWorld()
+        theirs:add("floor", 0, 8, 8, 8)
+        theirs:add("mover", 10, 2, 4, 4)
+        local px, py, pcols = theirs:move("mover", 6, 6)
+        assert.same({8, 6, 1, 0}, {px, py, pcols[1].normal.x, pcols[1].normal.y})
+      end
+    end)
+
+    it("lets out an item that starts inside another (bump backs it out along its move)", function()
+      local world = bump.newWorld()
+      world:add("wall", 0, 0, 8, 8)
+      world:add("mover", 3, 3, 2, 2)
+      local x, y, _, len = world:move("mover", 4, 5)
+      assert.same({4, 5, 0}, {x, y, len})
+      -- project and detectCollision report the overlap, with the touch where it starts
+      local cols, n = world:project("mover", 3, 3, 2, 2, 4, 5)
+      assert.equal(1, n)
+      assert.is_true(cols[1].overlaps)
+      assert.same({3, 3, -4}, {cols[1].touch.x, cols[1].touch.y, cols[1].ti})
+      local col = bump.rect.detectCollision(3, 3, 2, 2, 0, 0, 8, 8, 3, 3)
+      assert.same({3, 8, 0, 1}, {col.touch.x, col.touch.y, col.normal.x, col.normal.y})
+    end)
+
+    it("reports a segment that starts and ends inside an item (bump leaves it out)", function()
+      local world = bump.newWorld()
+      world:add("room", 0, 0, 100, 100)
+      local items, len = world:querySegment(10, 10, 20, 30)
+      assert.same({{"room"}, 1}, {items, len})
+      local infos = world:querySegmentWithCoords(10, 10, 20, 30)
+      assert.same({0, 1, 10, 10, 20, 30}, {infos[1].ti1, infos[1].ti2, infos[1].x1,
+        infos[1].y1, infos[1].x2, infos[1].y2})
+    end)
+
+    it("counts cells as they are now (bump counts emptied cells until a collection)", function()
+      local world = bump.newWorld()
+      world:add("a", 0, 0, 10, 10)
+      world:add("b", 200, 200, 10, 10)
+      world:add("c", 60, 60, 70, 10) -- cells (1..3, 1..2)
+      assert.equal(1 + 1 + 6 - 1, world:countCells()) -- (a's cell is one of c's)
+      world:remove("b")
+      assert.equal(6, world:countCells())
+      assert.same({2, 2}, {world:toCell(64, 64)})
+      assert.same({0, 0}, {world:toCell(-0.5, -64)})
+      assert.same({-64, 128}, {world:toWorld(0, 3)})
+    end)
+  end)
+
+  describe("moves", function()
+    it("slide, touch, cross and bounce, with every field of the cols", function()
+      local world = bump.newWorld()
+      world:add("wall", 16, 0, 8, 64)
+      world:add("coin", 10, 20, 4, 4)
+      world:add("p", 0, 0, 8, 8)
+      local function filter(_, other) return other == "coin" and "cross" or "slide" end
+      local x, y, cols, len = world:move("p", 24, 24, filter)
+      -- straight at (24, 24): the wall's left face at x = 8, a third of the way, at y = 8;
+      -- then down the face to y = 24; the coin crossed on the way down
+      assert.same({8, 24, 2}, {x, y, len})
+      local wall, coin = cols[1], cols[2]
+      assert.same({"p", "wall", "slide", false}, {wall.item, wall.other, wall.type, wall.overlaps})
+      assert.same({8, 8, -1, 0, 8, 24}, {wall.touch.x, wall.touch.y, wall.normal.x,
+        wall.normal.y, wall.slide.x, wall.slide.y})
+      assert.same({24, 24, 1 / 3}, {wall.move.x, wall.move.y, wall.ti})
+      assert.same({x = 0, y = 0, w = 8, h = 8}, wall.itemRect)
+      assert.same({x = 16, y = 0, w = 8, h = 64}, wall.otherRect)
+      assert.same({"coin", "cross", 8, 12, 0, -1}, {coin.other, coin.type, coin.touch.x,
+        coin.touch.y, coin.normal.x, coin.normal.y})
+      -- the second leg: from (8, 8) down to (8, 24); the coin's top (y 20) met at y 12
+      assert.same({0, 16, 0.25}, {coin.move.x, coin.move.y, coin.ti})
+      assert.same({x = 8, y = 8, w = 8, h = 8}, coin.itemRect)
+      assert.is_nil(coin.slide)
+      assert.same({{8, 24, 8, 8}}, rects(world, {"p"}))
+
+      world:update("p", 0, 40)
+      x, y, cols, len = world:move("p", 16, 40, function() return "bounce" end)
+      assert.same({0, 40, 1}, {x, y, len}) -- 8 to the face, 8 back
+      assert.same({8, 40, 0, 40}, {cols[1].touch.x, cols[1].touch.y, cols[1].bounce.x,
+        cols[1].bounce.y})
+      world:update("p", 0, 40)
+      x, y, cols, len = world:move("p", 16, 40, function() return "touch" end)
+      assert.same({8, 40}, {cols[1].touch.x, cols[1].touch.y})
+      assert.same({8, 40, 1}, {x, y, len})
+    end)
+
+    it("lets every item block every other, the moved one included", function()
+      local world = bump.newWorld()
+      world:add(1, 0, 0, 8, 8)
+      world:add(2, 20, 0, 8, 8)
+      world:move(2, 40, 0)
+      assert.same({32, 0}, xy(world:move(1, 60, 0))) -- (2 is at 40 now)
+      assert.same({40, 0}, xy(world:move(2, 0, 0))) -- 1 is in the way back
+      world:move(1, 0, 0)
+      assert.same({8, 0}, xy(world:move(2, 0, 0)))
+      assert.same({0, 8}, {(world:getRect(1)), (world:getRect(2))})
+    end)
+
+    it("ends exactly at the goal on an axis nothing stopped (x + (goal - x) can round)", function()
+      local world = bump.newWorld()
+      world:add("p", 1000000.1, 0.7, 1, 1)
+      assert.same({0.3, 0.9}, xy(world:move("p", 0.3, 0.9)))
+      assert.is_true(1000000.1 + (0.3 - 1000000.1) ~= 0.3) -- (the case this is about)
+    end)
+
+    it("check says what move would do, and changes nothing: a trace with checks "
+      .. "interleaved equals the trace without", function()
+      local function run(with_checks)
+        local world = bump.newWorld(16)
+        local rng = random_source.new(99)
+        for i = 1, 40 do world:add("w" .. i, rng(0, 300), rng(0, 300), rng(4, 40), rng(4, 40)) end
+        local movers = {}
+        for i = 1, 6 do
+          movers[i] = {id = i}
+          world:add(movers[i], -100 + i * 30, -50, 10, 10)
+        end
+        local lines = {}
+        local function filter(_, other) return type(other) == "table" and "cross" or "slide" end
+        for step = 1, 400 do
+          local m = movers[step % 6 + 1]
+          local x, y = world:getRect(m)
+          local gx, gy = x + rng(-20, 20), y + rng(-20, 20)
+          if with_checks then
+            local cx, cy, ccols, clen = world:check(m, gx, gy, filter)
+            local expected = describe_move(cx, cy, ccols, clen)
+            assert.same({x, y}, xy(world:getRect(m)))
+            local got = describe_move(world:move(m, gx, gy, filter))
+            assert.equal(expected, got)
+            lines[step] = got
+            world:check(m, gx + 5, gy - 5, filter) -- (and one that is not followed)
+          else
+            lines[step] = describe_move(world:move(m, gx, gy, filter))
+          end
+        end
+        return table.concat(lines, "\n")
+      end
+      assert.equal(run(false), run(true))
+    end)
+
+    it("runs a custom response from addResponse: a oneway platform, from below and above", function()
+      local world = bump.newWorld()
+      local calls = 0
+      world:addResponse("oneway", function(w, col, x, y, width, height, goal_x, goal_y, filter)
+        calls = calls + 1
+        if col.normal.y == -1 then -- landing on it from above: slide
+          return bump.responses.slide(w, col, x, y, width, height, goal_x, goal_y, filter)
+        end
+        return bump.responses.cross(w, col, x, y, width, height, goal_x, goal_y, filter)
+      end)
+      world:add("platform", 0, 50, 100, 4)
+      world:add("ceiling", 0, -40, 100, 4)
+      world:add("p", 10, 60, 8, 8)
+      local function filter(_, other) return other == "platform" and "oneway" or "slide" end
+      -- jumping up through it: crossed, then stopped by the ceiling
+      local x, y, cols, len = world:move("p", 10, -60, filter)
+      assert.same({10, -36, 2}, {x, y, len})
+      assert.same({"platform", "oneway", 54}, {cols[1].other, cols[1].type, cols[1].touch.y})
+      assert.same({"ceiling", "slide", -36}, {cols[2].other, cols[2].type, cols[2].touch.y})
+      -- falling onto it: lands
+      x, y, cols, len = world:move("p", 20, 100, filter)
+      assert.same({"platform", "oneway", 0, -1}, {cols[1].other, cols[1].type,
+        cols[1].normal.x, cols[1].normal.y})
+      assert.same({1, 42}, {len, y})
+      assert.equal(20, x)
+      assert.equal(2, calls)
+    end)
+
+    it("gives items any value but nil, and never writes to the game's tables", function()
+      local world = bump.newWorld()
+      local tbl = setmetatable({name = "t"}, {__newindex = function() error("written to") end})
+      local fn = function() end
+      for i, item in ipairs({"s", 42, 1.5, true, false, tbl, fn}) do
+        assert.equal(item, world:add(item, i * 20, 0, 10, 10))
+        assert.is_true(world:hasItem(item))
+      end
+      world:move(tbl, 0, 0)
+      world:update(false, 200, 0)
+      assert.same({"s", 42, 1.5, true, false, tbl, fn}, (world:getItems()))
+      assert.equal(7, world:countItems())
+      assert.same({"t"}, {tbl.name})
+      local n = 0
+      for _ in pairs(tbl) do n = n + 1 end
+      assert.equal(1, n)
+      assert.same({42}, (world:queryPoint(45, 5)))
+      world:remove(42)
+      assert.is_false(world:hasItem(42))
+      assert.is_false(world:hasItem(0 / 0))
+      assert.is_false(world:hasItem(nil))
+    end)
+
+    it("gives the same results whatever the items' addresses (no pairs() order)", function()
+      local function run(pad)
+        local world = bump.newWorld(32)
+        local keep = {}
+        local items = {}
+        for i = 1, 60 do
+          for _ = 1, pad do keep[#keep + 1] = {} end -- (other addresses each run)
+          items[i] = {i = i}
+          world:add(items[i], (i * 37) % 300, (i * 53) % 300, 12, 12)
+        end
+        local out = {}
+        for step = 1, 300 do
+          local item = items[step % 60 + 1]
+          local x, y, cols, len = world:move(item, (step * 7) % 300, (step * 11) % 300)
+          local parts = {string.format("%.17g %.17g", x, y)}
+          for c = 1, len do parts[#parts + 1] = cols[c].other.i end
+          for _, it in ipairs((world:queryRect(0, 0, 150, 150))) do parts[#parts + 1] = it.i end
+          for _, it in ipairs((world:querySegment(0, 0, 300, 290))) do parts[#parts + 1] = it.i end
+          out[step] = table.concat(parts, " ")
+        end
+        return table.concat(out, "\n"), #keep
+      end
+      assert.equal(run(0), (run(7)))
+    end)
+
+    it("allocates nothing per move, check and project once warm, reusing its cols", function()
+      local world = bump.newWorld(32)
+      for i = 1, 40 do world:add("wall" .. i, (i * 67) % 500, (i * 41) % 500, 20, 20) end
+      local movers = {}
+      for i = 1, 20 do
+        movers[i] = {}
+        world:add(movers[i], (i * 29) % 500, (i * 31) % 500, 8, 8)
+      end
+      local responses = {"slide", "cross", "touch", "bounce"}
+      local function filter(_, other)
+        if type(other) == "table" then return "cross" end
+        return responses[#other % 4 + 1]
+      end
+      local probe = {}
+      local total = 0
+      local function frame(f)
+        for i = 1, #movers do
+          local x, y = world:getRect(movers[i])
+          local _, _, _, len = world:move(movers[i], x + ((i + f) % 17) - 8, y + ((i * 3 + f) % 17) - 8,
+            filter)
+          total = total + len
+        end
+        world:check(movers[1], 0, 0, filter)
+        world:project(probe, 10, 10, 8, 8, 300, 200)
+      end
+      local function reset()
+        for i = 1, #movers do world:update(movers[i], (i * 29) % 500, (i * 31) % 500) end
+      end
+      local bytes = garbage.measure(frame, 200, {jit_off = true, reset = reset,
+        warm = function() for _ = 1, 3 do reset(); for f = 1, 200 do frame(f) end end end})
+      assert.equal(0, bytes)
+      assert.is_true(total > 100, "only " .. total .. " collisions")
+    end)
+  end)
+
+  describe("errors", function()
+    local function message(fn)
+      local ok, err = pcall(fn)
+      assert.is_false(ok)
+      return err
+    end
+    local here = "spec/bump_spec.lua:%d+: "
+
+    it("name the argument and the value, at the caller's line, and change nothing", function()
+      local world = bump.newWorld()
+      world:add("a", 0, 0, 10, 10)
+      local cases = {
+        {function() bump.newWorld(-10) end, "cellSize must be a finite number > 0, got %-10"},
+        {function() bump.newWorld("") end, "cellSize must be a finite number > 0, got \"\""},
+        {function() world:add(nil, 0, 0, 1, 1) end,
+          "item must be a value other than nil and nan, got nil"},
+        {function() world:add("a", 0, 0, 1, 1) end, "item is already in this world, got \"a\""},
+        {function() world:add("c", 0, 0, 0, 1) end, "w must be a finite number > 0, got 0"},
+        {function() world:add("c", 0, nil, 1, 1) end, "y must be a finite number, got nil"},
+        {function() world:update("nope", 0, 0) end,
+          "item must be an item of this world %(add it with world:add%), got \"nope\""},
+        {function() world:update("a", 0, 0, -1) end, "w must be a finite number > 0, got %-1"},
+        {function() world:move("a", 0 / 0, 0) end, "goalX must be a finite number, got nan"},
+        {function() world:move("a", 1, 1, "slide") end,
+          "filter must be a function or nil, got \"slide\""},
+        {function() world:move("a", 20, 0, function() return "stick" end) end, nil},
+        {function() world:queryRect(0, 0, -1, -1) end, "w must be a finite number > 0, got %-1"},
+        {function() world.move("a", 1, 1) end,
+          "call it as world:move%(...%), with a colon, got \"a\" for the world"},
+        {function() world:addResponse("x", 3) end, "response must be a function, got 3"},
+        {function() world:getRect({}) end, "item must be an item of this world"},
+      }
+      world:add("b", 15, 0, 10, 10)
+      for i, case in ipairs(cases) do
+        local err = message(case[1])
+        if case[2] then
+          assert.matches("^" .. here .. case[2], err, 1, false, "case " .. i)
+        end
+      end
+      assert.matches("^" .. here, message(cases[11][1]))
+      assert.equal("filter must return the name of a response (\"touch\", \"cross\", "
+        .. "\"slide\", \"bounce\" or one given to world:addResponse), or false/nil, got "
+        .. "\"stick\" for \"b\"", (message(cases[11][1]):gsub("^spec/bump_spec.lua:%d+: ",
+        "")))
+      assert.same({0, 0, 10, 10}, {world:getRect("a")})
+      assert.same({15, 0, 10, 10}, {world:getRect("b")})
+      assert.equal(2, world:countItems())
+    end)
+
+    it("from the game's filter or response pass through unchanged and leave the item where "
+      .. "its move began", function()
+      local world = bump.newWorld()
+      world:add("wall", 20, 0, 10, 100)
+      world:add("coin", 10, 0, 2, 2)
+      world:add("p", 0, 0, 8, 8)
+      local boom = {}
+      local err = message(function()
+        world:move("p", 40, 40, function(_, other) if other == "coin" then return "cross" end
+          error(boom) end)
+      end)
+      assert.equal(boom, err)
+      assert.same({0, 0, 8, 8}, {world:getRect("p")})
+      world:addResponse("explode", function() error("kaboom", 0) end)
+      err = message(function()
+        world:move("p", 40, 0, function(_, other) return other == "wall" and "explode" end)
+      end)
+      assert.equal("kaboom", err)
+      assert.same({0, 0, 8, 8}, {world:getRect("p")})
+      world:addResponse("lost", function() return nil end)
+      err = message(function()
+        world:move("p", 40, 0, function(_, other) return other == "wall" and "lost" end)
+      end)
+      assert.matches("^" .. here .. "response \"lost\" must return the new goal %(two finite "
+        .. "numbers%), got nil, nil$", err)
+      assert.same({0, 0, 8, 8}, {world:getRect("p")})
+      -- and the world still works
+      assert.same({2, 0}, xy(world:move("p", 40, 0))) -- (the coin, sliding)
+      -- a filter may not call into its world
+      err = message(function()
+        world:move("p", 0, 0, function() world:queryRect(0, 0, 1, 1) end)
+      end)
+      assert.matches("world:queryRect was called from inside a move's filter", err)
+    end)
+  end)
+end)
