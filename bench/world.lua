@@ -1,17 +1,32 @@
--- bench/world.lua: world:move on a tile map, three ways, against a hand-written reference.
+-- bench/world.lua: world:move on a tile map, several ways, against a hand-written reference.
 --
---   lua bench/world.lua [--actors 100,1000,10000] [--frames 600] [--runs 3]
+--   lua bench/world.lua [--actors 100,1000,10000] [--frames 600] [--runs 5] [--readme README.md]
 --
 -- The scene: a 200x200 map of 16 px tiles, border walls and 20% random solid tiles; N
 -- actors of 12x12 in free cells, each moving 1..8 px per frame in a fixed direction and
--- sliding, for F frames. Ways: (a) the map as a tile layer, (b) every solid tile as its
--- own 16x16 solid box in the spatial hash, (m) the solid tiles merged into rectangles by
--- budge.tiles.merge, in the hash, (c) a reference with no library that moves x then y
--- against the tile array (the speed limit for this scene). Reports ns per actor
--- per frame (median of the runs), the ratios a/c and b/c, and KB allocated per frame
--- (GC stopped, after a warm-up). Positions after the run must agree across a, b and c.
+-- sliding, for F frames. Ways:
+--   reference  no library: moves x then y against the tile array (the speed limit);
+--   tiles      the map as a budge tile layer;
+--   boxes      every solid tile its own 16x16 solid box in budge's spatial hash;
+--   merged     the solid tiles merged into rectangles by budge.tiles.merge, in the hash;
+--   bump_boxes budge.bump (the bump.lua front end), every solid tile an item, as bump
+--              games do (actors block each other there, as in bump);
+--   bump_merged budge.bump with the merged rectangles as items;
+--   bump       bump.lua itself, every tile an item, when require("bump") finds it
+--              (BUMP_PATH=dir adds dir to package.path).
+-- Each way and run is its own fresh process (on LuaJIT what one way compiles changes
+-- another's figures, and a bare loop compiles two ways from run to run), the ways
+-- interleaved; the medians of the runs are printed, with the ratios to the reference's
+-- median. bump.lua runs at most 300000 moves a run (fewer frames at 10000 actors: it is
+-- slow), the others F frames. KB per frame are allocated with the GC stopped, after a
+-- warm-up. The budge ways that move as the reference does (tiles, boxes, merged) must end
+-- every actor where it does: the processes print a checksum of the final positions.
+-- --readme FILE writes the table into FILE between the markers for this interpreter.
 if ... ~= "bench.world" then -- run as a program; bench/run.lua requires it as a module
   package.path = "./src/?.lua;./src/?/init.lua;./?.lua;" .. package.path
+  if os.getenv("BUMP_PATH") then
+    package.path = os.getenv("BUMP_PATH") .. "/?.lua;" .. package.path
+  end
 end
 local budge = require("budge")
 local common = require("bench.common")
@@ -97,13 +112,19 @@ local function setup(way, grid, starts, method)
         reference_move(grid, actor, actor.dx, actor.dy)
       end
     end
-  elseif way == "bump" then
-    local bump = require("bump")
+  elseif way == "bump" or way == "bump_boxes" or way == "bump_merged" then
+    local bump = way == "bump" and require("bump") or require("budge.bump")
     local world = bump.newWorld(64)
-    for row = 1, MAP do
-      for col = 1, MAP do
-        if grid[row][col] then
-          world:add({}, (col - 1) * TILE, (row - 1) * TILE, TILE, TILE)
+    if way == "bump_merged" then
+      for _, solid in ipairs(budge.tiles.merge(grid, TILE, TILE)) do
+        world:add({}, solid.x, solid.y, solid.width, solid.height)
+      end
+    else
+      for row = 1, MAP do
+        for col = 1, MAP do
+          if grid[row][col] then
+            world:add({}, (col - 1) * TILE, (row - 1) * TILE, TILE, TILE)
+          end
         end
       end
     end
@@ -158,64 +179,114 @@ if ... == "bench.world" then -- required by bench/run.lua: export the timing, ru
   return {run = run, make_scene = make_scene, make_actors = make_actors}
 end
 
-local options = common.options(arg, {actors = "100,1000,10000", frames = 600, runs = 3,
-  seed = 12345, csv = "", profile = ""})
+local options = common.options(arg, {actors = "100,1000,10000", frames = 600, runs = 5,
+  seed = 12345, csv = "", profile = "", way = "", count = 0, readme = ""})
 local grid = make_scene(options.seed)
-local has_bump = pcall(require, "bump")
-local ways = {"tiles", "boxes", "merged", "reference"}
-if has_bump then ways[#ways + 1] = "bump" end
 if options.profile ~= "" then -- one way alone, for luajit -jp
   local starts = make_actors(grid, new_random(options.seed + 1000), 1000)
   print(options.profile, ("%.0f ns per move"):format(run(options.profile, grid, starts, options.frames)))
   return
 end
 
-print(("budge %s world bench on %s, %s"):format(budge._VERSION, common.interpreter(),
-  common.machine()))
-print(("map %dx%d tiles of %d px, 20%% solid; actors %dx%d moving 1..8 px per frame; %d frames; "
-  .. "median of %d runs"):format(MAP, MAP, TILE, SIZE, SIZE, options.frames, options.runs))
-if not has_bump then print("bump.lua: not installed, skipped (a user's own `require(\"bump\")` enables it)") end
-print(("%8s %12s %12s %12s %12s %7s %7s %7s %9s %9s %s"):format("actors", "a tiles ns",
-  "b boxes ns", "m merged ns", "c ref ns", "a/c", "b/c", "m/c", "a KB/fr", "b KB/fr",
-  has_bump and "bump/c" or ""))
-local csv = {"interpreter,actors,frames,runs,tiles_ns,boxes_ns,merged_ns,reference_ns,"
-  .. "tiles_kb_per_frame,boxes_kb_per_frame,bump_ns"}
-for count in tostring(options.actors):gmatch("%d+") do
-  count = tonumber(count)
+-- How many frames a way runs with `count` actors.
+local function frames_for(way, count)
+  if way == "bump" then return math.min(options.frames, math.ceil(300000 / count)) end
+  return options.frames
+end
+
+if options.way ~= "" then -- one run of one way in this process: ns, KB per frame, checksum
+  local count = options.count
   local starts = make_actors(grid, new_random(options.seed + count), count)
-  local times, memory, finals = {}, {}, {}
-  for _, way in ipairs(ways) do times[way] = {}; memory[way] = 0 end
-  for _ = 1, options.runs do
-    for _, way in ipairs(ways) do
-      local ns, kb, actors = run(way, grid, starts, options.frames)
-      times[way][#times[way] + 1] = ns
-      if kb > memory[way] then memory[way] = kb end
-      finals[way] = actors
-    end
-  end
-  for i = 1, count do
-    local c = finals.reference[i]
-    for _, way in ipairs({"tiles", "boxes", "merged"}) do
-      local a = finals[way][i]
-      if a.x ~= c.x or a.y ~= c.y then
-        error(("actor %d ends at %.17g,%.17g (%s) but at %.17g,%.17g (reference)")
-          :format(i, a.x, a.y, way, c.x, c.y))
+  local ns, kb, actors = run(options.way, grid, starts, frames_for(options.way, count))
+  local sum = 0
+  for i = 1, #actors do sum = sum + actors[i].x * (i % 7 + 1) + actors[i].y * (i % 11 + 3) end
+  print(("%.3f %.6f %.17g"):format(ns, kb, sum))
+  os.exit(0)
+end
+
+local interpreter = arg[-1] or "lua"
+local has_bump = pcall(require, "bump")
+local ways = {"reference", "tiles", "boxes", "merged", "bump_boxes", "bump_merged"}
+if has_bump then ways[#ways + 1] = "bump" end
+local NAMES = {reference = "(c) reference", tiles = "(a) tile layer", boxes = "(b) box per tile",
+  merged = "(m) merged boxes", bump_boxes = "budge.bump, box per tile",
+  bump_merged = "budge.bump, merged", bump = "bump.lua 3.1.7"}
+local lines = {}
+local function say(line)
+  print(line)
+  lines[#lines + 1] = line
+end
+local date = os.date("!%Y-%m-%d")
+say(("`%s bench/world.lua --frames %d --runs %d`, %s, on %s, %s: ns per actor per frame, "
+  .. "median of %d fresh processes (the ways interleaved); ratio to the reference's median "
+  .. "in brackets%s."):format(interpreter, options.frames, options.runs, date,
+  common.interpreter(), common.machine(), options.runs,
+  has_bump and "; bump.lua at most 300000 moves a run" or "; bump.lua not found, skipped"))
+say("")
+local header, rule = "| way |", "|---|"
+local counts = {}
+for count in tostring(options.actors):gmatch("%d+") do
+  counts[#counts + 1] = tonumber(count)
+  header = header .. (" N = %s |"):format(count)
+  rule = rule .. "---|"
+end
+local medians, memory = {}, {}
+for _, count in ipairs(counts) do
+  local results = common.fresh_runs(ways, options.runs, 3, function(way)
+    return ("%s bench/world.lua --way %s --count %d --frames %d --seed %d"):format(
+      interpreter, way, count, options.frames, options.seed)
+  end)
+  for _, way in ipairs({"tiles", "boxes", "merged"}) do
+    for run_index = 1, options.runs do
+      if results[way][3][run_index] ~= results.reference[3][1] then
+        error(("%s ends the %d actors elsewhere than the reference (checksum %.17g, not %.17g)")
+          :format(way, count, results[way][3][run_index], results.reference[3][1]))
       end
     end
   end
-  local a, b, c = common.median(times.tiles), common.median(times.boxes), common.median(times.reference)
-  local m = common.median(times.merged)
-  local bump_ns = has_bump and common.median(times.bump) or nil
-  print(("%8d %12.0f %12.0f %12.0f %12.0f %7.2f %7.2f %7.2f %9.3f %9.3f %s"):format(count, a, b, m,
-    c, a / c, b / c, m / c, memory.tiles, memory.boxes,
-    bump_ns and ("%.2f"):format(bump_ns / c) or ""))
-  csv[#csv + 1] = ("%s,%d,%d,%d,%.1f,%.1f,%.1f,%.1f,%.4f,%.4f,%s"):format(common.interpreter(),
-    count, options.frames, options.runs, a, b, m, c, memory.tiles, memory.boxes,
-    bump_ns and ("%.1f"):format(bump_ns) or "")
+  for _, way in ipairs(ways) do
+    medians[way] = medians[way] or {}
+    memory[way] = memory[way] or {}
+    medians[way][count] = common.median(results[way][1])
+    local worst = 0
+    for _, value in ipairs(results[way][2]) do worst = math.max(worst, value) end
+    memory[way][count] = worst
+  end
 end
-print("every way ends every actor at the same position")
-if options.csv ~= "" then
-  local file = assert(io.open(options.csv, "w"))
-  file:write(table.concat(csv, "\n"), "\n")
+say(header)
+say(rule)
+for _, way in ipairs(ways) do
+  local row = ("| %s |"):format(NAMES[way])
+  for _, count in ipairs(counts) do
+    local ns = medians[way][count]
+    if way == "reference" then row = row .. (" %.0f |"):format(ns)
+    else row = row .. (" %.0f (%.1fx) |"):format(ns, ns / medians.reference[count]) end
+  end
+  say(row)
+end
+say("")
+local kb = {}
+for _, way in ipairs(ways) do
+  local worst = 0
+  for _, count in ipairs(counts) do worst = math.max(worst, memory[way][count]) end
+  kb[#kb + 1] = ("%s %.3f"):format(way, worst)
+end
+say("Most KB allocated per frame (GC stopped, after warm-up): " .. table.concat(kb, ", ")
+  .. ". The tile layer, boxes and merged boxes end every actor where the reference does.")
+
+if options.readme ~= "" then -- the table into the README, between this interpreter's markers
+  local key = rawget(_G, "jit") and "luajit" or _VERSION:gsub("Lua ", "lua")
+  local begin_mark = ("<!-- bench/world.lua %s -->"):format(key)
+  local end_mark = ("<!-- end bench/world.lua %s -->"):format(key)
+  local file = assert(io.open(options.readme, "r"))
+  local text = file:read("*a")
   file:close()
+  local first, last = text:find(begin_mark, 1, true)
+  local tail = text:find(end_mark, 1, true)
+  assert(first and tail and tail > last, "no markers " .. begin_mark .. " in " .. options.readme)
+  text = text:sub(1, last) .. "\n" .. table.concat(lines, "\n") .. "\n" .. text:sub(tail)
+  file = assert(io.open(options.readme, "w"))
+  file:write(text)
+  file:close()
+  print("written into " .. options.readme)
 end

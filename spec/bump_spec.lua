@@ -194,8 +194,11 @@ describe("budge.bump", function()
       local world = bump.newWorld()
       world:add("wall", 0, 0, 8, 8)
       world:add("mover", 3, 3, 2, 2)
-      local x, y, _, len = world:move("mover", 4, 5)
-      assert.same({4, 5, 0}, {x, y, len})
+      local x, y, cols, len = world:move("mover", 4, 5)
+      assert.same({4, 5, 1}, {x, y, len}) -- reported, with its overlap, and let out
+      assert.same({"wall", "slide", true, 3, 3, -4, 4, 5}, {cols[1].other, cols[1].type,
+        cols[1].overlaps, cols[1].touch.x, cols[1].touch.y, cols[1].ti, cols[1].slide.x,
+        cols[1].slide.y})
       -- project and detectCollision report the overlap, with the touch where it starts
       local cols, n = world:project("mover", 3, 3, 2, 2, 4, 5)
       assert.equal(1, n)
@@ -507,11 +510,17 @@ describe("budge.bump", function()
       assert.same({0, 0, 8, 8}, {world:getRect("p")})
       -- and the world still works
       assert.same({2, 0}, xy(world:move("p", 40, 0))) -- (the coin, sliding)
-      -- a filter may not call into its world
+      -- a filter may query its world, not change it
+      local seen
+      world:move("p", 0, 40, function() seen = world:queryRect(0, 0, 40, 40) end)
+      assert.same({"wall", "coin", "p"}, seen)
       err = message(function()
-        world:move("p", 0, 0, function() world:queryRect(0, 0, 1, 1) end)
+        world:move("p", 40, 0, function() world:add("x", 0, 0, 1, 1) end)
       end)
-      assert.matches("world:queryRect was called from inside a move's filter", err)
+      assert.matches("^" .. here .. "world:add was called from inside a move's filter or "
+        .. "response: they may project and query the world, not add, remove, update or move "
+        .. "items in it$", err)
+      assert.is_false(world:hasItem("x"))
     end)
   end)
 end)

@@ -262,6 +262,69 @@ function Hash:collect(x, y, width, height, out, n)
   return n
 end
 
+-- Appends the records of one cell that overlap the rectangle (x0, y0)-(x1, y1) strictly
+-- and are not stamped yet to `out`, stamping them.
+local function overlapping_in_cell(cell, stamp, x0, y0, x1, y1, out, n)
+  for i = 1, #cell do
+    local record = cell[i]
+    if record.x < x1 and x0 < record.x + record.width and record.y < y1
+      and y0 < record.y + record.height and record._stamp ~= stamp then
+      record._stamp = stamp
+      n = n + 1
+      out[n] = record
+    end
+  end
+  return n
+end
+
+---Appends to `out` (from index n + 1) every record whose box (its x, y, width and
+---height) overlaps the rectangle strictly, once each, and returns the new count; in the
+---order Hash:collect gives. (budge.bump's moves: the overlap test while walking the
+---cells, instead of a second pass over everything collect finds.)
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+---@param out budge.HashRecord[]
+---@param n integer how many entries of `out` to keep
+---@return integer n
+function Hash:collect_overlapping(x, y, width, height, out, n)
+  local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
+  if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > self._n then -- fewer records than cells
+    local first = n
+    n = self:collect(x, y, width, height, out, n)
+    local kept = first
+    for i = first + 1, n do
+      local record = out[i]
+      if record.x < x + width and x < record.x + record.width and record.y < y + height
+        and y < record.y + record.height then
+        kept = kept + 1
+        out[kept] = record
+      end
+    end
+    return kept
+  end
+  local stamp = self:next_stamp()
+  local x1, y1 = x + width, y + height
+  local cells = self._cells
+  local columns = cx1 - cx0 + 1
+  for k = 0, columns * (cy1 - cy0 + 1) - 1 do -- (one flat loop: see Hash:collect)
+    local row = floor(k / columns)
+    local cell = cells[(cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
+    if cell then n = overlapping_in_cell(cell, stamp, x, y, x1, y1, out, n) end
+  end
+  local big = self._big
+  for i = 1, #big do
+    local record = big[i]
+    if record.x < x1 and x < record.x + record.width and record.y < y1
+      and y < record.y + record.height then
+      n = n + 1
+      out[n] = record
+    end
+  end
+  return n
+end
+
 -- One record that spans the probe's path across: where it stops the probe, if it does,
 -- and whether that is the best stop so far.
 -- LuaJIT shaping: probe fields are read where they are used, not hoisted into locals:

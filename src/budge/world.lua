@@ -68,6 +68,7 @@ local world = {}
 ---@field package _sx1? number
 ---@field package _sy1? number
 ---@field package _frame_in? integer the contacts call that last saw it in the world
+---@field package _visit? integer the budge.bump move that last met it (its visited set)
 
 ---A world of solids, actors and tile layers. Made by budge.new_world.
 ---@class budge.World
