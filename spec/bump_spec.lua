@@ -512,7 +512,8 @@ describe("budge.bump", function()
       assert.same({2, 0}, xy(world:move("p", 40, 0))) -- (the coin, sliding)
       -- a filter may query its world, not change it
       local seen
-      world:move("p", 0, 40, function() seen = world:queryRect(0, 0, 40, 40) end)
+      world:add("floor", 0, 60, 40, 4)
+      world:move("p", 2, 70, function() seen = world:queryRect(0, 0, 40, 40) end)
       assert.same({"wall", "coin", "p"}, seen)
       err = message(function()
         world:move("p", 40, 0, function() world:add("x", 0, 0, 1, 1) end)

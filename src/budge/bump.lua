@@ -244,6 +244,11 @@ local ENGINE = {[touch_response] = "touch", [cross_response] = "cross",
 ---@field package _cands budge.Record[] one leg's candidates, sorted by entry time
 ---@field package _times number[] their entry times (an overlap: minus its area)
 ---@field package _axes integer[] the axis each is entered across (1: x, 2: y)
+---@field package _own budge.Record the running move's item's record (and _item, _w, _h)
+---@field package _out table[] the running move's cols list and their pool (_out_pool)
+---@field package _n integer how many cols it has
+---@field package _sx integer its leg's signs and faces (fill_col): -1 moving right, 1 left
+---@field package _sy integer likewise down and up
 ---@field package _visited_filter function the filter a custom response is given
 ---@field package _move_cols table[] world:move's list (reused), its records from _move_pool
 ---@field package _move_pool table[]
@@ -583,7 +588,7 @@ local function fill_col(self, col, item, record, kind, t, axis, x, y, w, h, goal
   local ax = 2 - axis
   local ay = 1 - ax
   local sx, sy = self._sx, self._sy -- -1 moving right (down), 1 moving left (up)
-  normal.x, normal.y = ax * sx, ay * sy
+  normal.x, normal.y = ax * sx + 0, ay * sy + 0 -- (+ 0: never -0)
   -- the face: rx - w moving right, rx + rw moving left (and likewise on y)
   touch.x = ax * (rx + self._fx * rw + self._gx) + ay * (x + dx * t)
   touch.y = ay * (ry + self._fy * rh + self._gy) + ax * (y + dy * t)
@@ -624,7 +629,7 @@ local function meet(self, k, x, y, goal_x, goal_y)
   local n = self._n + 1
   self._n = n
   local t = self._times[k]
-  local col = fill_col(self, col_at(self._list, self._pool, n), item, other, answer, t,
+  local col = fill_col(self, col_at(self._out, self._out_pool, n), item, other, answer, t,
     self._axes[k], x, y, self._w, self._h, goal_x, goal_y)
   if t < 0 or response == "cross" then -- crossed, or let out of it: the leg goes on
     if answer == "slide" then
@@ -683,7 +688,7 @@ function plan_move(self, proxy, goal_x, goal_y, filter, list, pool)
   self._running = true
   self._own = self._world._records[proxy]
   self._item, self._w, self._h = proxy.item, proxy.width, proxy.height
-  self._filter, self._list, self._pool = filter, list, pool
+  self._filter, self._out, self._out_pool = filter, list, pool
   self._stamp = self._stamp + 1
   self._n = 0
   local x, y = proxy.x, proxy.y
