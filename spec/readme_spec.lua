@@ -28,6 +28,10 @@ describe("the README's examples", function()
     check_example("## One%-minute example")
   end)
 
+  it("coming from bump.lua: prints exactly the values written beside each print", function()
+    check_example("## Coming from bump.lua")
+  end)
+
   it("interactions: prints exactly the values written beside each print", function()
     check_example("### Interactions: responses, sensors, actors that meet actors, frame contacts")
   end)
