@@ -38,6 +38,10 @@ local bump = {
 -- A custom response's leg (world:addResponse) ends where the next begins; a move takes at
 -- most this many (each excludes what the legs before it met, as bump does).
 local MAX_LEGS = 64
+-- A move's marks (see plan_move): legs count up from the move's stamp; what it met is
+-- marked MET above it; the next move's stamp is MARK_SPAN above (exact in a double for
+-- 2^53 / 2^20 moves).
+local MET, MARK_SPAN = 2 ^ 19, 2 ^ 20
 
 -- rect helpers (bump.rect) ---------------------------------------------------------
 
@@ -240,10 +244,12 @@ local ENGINE = {[touch_response] = "touch", [cross_response] = "cross",
 ---"cross", "slide", "bounce", or "custom" (it calls the response)
 ---@field package _filter? function the running move's filter (nil: "slide" on everything)
 ---@field package _running boolean a move or check is running (its callbacks may be called)
----@field package _stamp integer counts moves: a record the move met has _visit = _stamp
----@field package _cands budge.Record[] one leg's candidates, sorted by entry time
----@field package _times number[] their entry times (an overlap: minus its area)
----@field package _axes integer[] the axis each is entered across (1: x, 2: y)
+---@field package _stamp number where the running move's marks begin (records' _mark):
+---_stamp + leg for one its leg's filter ignored, _stamp + MET for one it met (and its item)
+---@field package _pass number _stamp + the running leg's number
+---@field package _margin number how far a moved item's cells reach beyond its box
+---@field package _region budge.Record[] what the move's first leg's rectangle overlaps
+---(_region_n of them; the rectangle _region_left, _top, _right, _bottom)
 ---@field package _own budge.Record the running move's item's record (and _item, _w, _h)
 ---@field package _out table[] the running move's cols list and their pool (_out_pool)
 ---@field package _n integer how many cols it has
@@ -366,7 +372,10 @@ function bump.newWorld(cell_size)
     _filter = nil, -- the running move's filter (nil: the default, "slide" on everything)
     _running = false, -- a move or check is running (its filter or a response may be called)
     _stamp = 0, -- counts moves: what a move met carries its stamp (visited)
-    _cands = {}, _times = {}, _axes = {}, -- one leg's candidates, sorted by entry time
+    _pass = 0, -- the running leg's mark (see plan_move)
+    _margin = cell_size / 4, -- how far a moved item's loose cells reach (World:move)
+    _region = {}, _region_n = 0, _region_left = 0, _region_top = 0, _region_right = 0,
+    _region_bottom = 0, -- what the move's first leg's rectangle overlaps
     _move_cols = {}, _move_pool = {},
     _check_cols = {}, _check_pool = {},
     _project_cols = {}, _project_pool = {},
@@ -377,7 +386,7 @@ function bump.newWorld(cell_size)
   local records = self._world._records
   self._visited_filter = function(item, other)
     local proxy = self._proxies[other]
-    if proxy and records[proxy]._visit == self._stamp then return false end
+    if proxy and records[proxy]._mark >= self._stamp + MET then return false end
     local filter = self._filter
     if filter == nil then return "slide" end
     return filter(item, other)
@@ -431,7 +440,8 @@ function World:add(item, x, y, w, h)
   local index = #list + 1
   list[index] = proxy
   proxy._index = index
-  proxy._id = self._world._records[proxy].id
+  local record = self._world._records[proxy]
+  proxy._id, record._mark = record.id, 0
   self._proxies[item] = proxy
   return item
 end
@@ -498,72 +508,59 @@ local function candidate_farther(a, b, x, y, w, h)
     > square_distance(x, y, w, h, b.x, b.y, b.width, b.height)
 end
 
--- The candidates of one leg: the records in the hash that the box (x, y, w, h) moving by
--- (dx, dy) meets (budge's sweep.box_enter: strict overlap, the corner tie on y) or
--- overlaps at the start, less `own` and what this move met already, into world._cands
--- sorted by entry time (an overlap: minus its area, so the deepest first), then by the
--- distance between centres, then the hash's order. Returns how many.
--- LuaJIT shaping: three short loops (the records the leg's rectangle overlaps; their
--- entry times; the sort) rather than one: in one loop, box_enter's values live across
--- the loop's exits made LuaJIT abort its traces ("register coalescing too complex").
-local function leg_candidates(self, x, y, dx, dy)
+-- Makes the move's region (see plan_move) hold what the leg's rectangle overlaps: the
+-- records the first leg's rectangle overlaps, looked up in the hash again only when a
+-- leg leaves that rectangle (a bounce may; a slide never does).
+local function cover(self, left, top, right, bottom)
+  if left < self._region_left or top < self._region_top or right > self._region_right
+    or bottom > self._region_bottom then
+    self._region_n = self._world._actors:collect_overlapping(left, top, right - left,
+      bottom - top, self._region, 0)
+    self._region_left, self._region_top = left, top
+    self._region_right, self._region_bottom = right, bottom
+  end
+end
+
+-- The first thing the leg from (x, y) by (dx, dy) meets that the move has not met or
+-- passed over yet: its record, the leg time (an overlap at the start: minus its area,
+-- so the deepest first) and the axis it is entered across (1: x, 2: y; budge's corner
+-- rule: y when both at once), or nil. Ties go by the distance between centres, then by
+-- the region's order. Entry and exit times are sweep.box_enter's (the same roundings);
+-- with no motion on an axis, the rectangle test made it overlap on that axis.
+-- LuaJIT shaping: one pass for the nearest, asked again only past what the filter lets
+-- through, instead of sorting every candidate: short loops of varying length (the sort,
+-- the passes over a few candidates) are unrolled into every trace that runs them.
+local function nearest(self, x, y, dx, dy, left, top, right, bottom)
   local w, h = self._w, self._h
-  local left = dx < 0 and x + dx or x
-  local top = dy < 0 and y + dy or y
-  local right = (dx < 0 and x or x + dx) + w
-  local bottom = (dy < 0 and y or y + dy) + h
-  local cands, times, axes = self._cands, self._times, self._axes
-  local count = self._world._actors:collect_overlapping(left, top, right - left, bottom - top,
-    cands, 0)
-  local stamp, own = self._stamp, self._own
-  local m = 0
-  for i = 1, count do -- (what this move met already, and the item itself, left out)
-    local record = cands[i]
-    if record._visit ~= stamp and record ~= own then
-      m = m + 1
-      cands[m] = record
-    end
-  end
-  -- the leg's signs, for fill_col
-  if dx > 0 then self._sx, self._fx, self._gx = -1, 0, -w else self._sx, self._fx, self._gx = 1, 1, 0 end
-  if dy > 0 then self._sy, self._fy, self._gy = -1, 0, -h else self._sy, self._fy, self._gy = 1, 1, 0 end
-  -- the entry and exit times on each axis, as sweep.box_enter computes them (the same
-  -- roundings); with no motion on an axis, the rectangle test above made it overlap
   local x1, y1 = x + w, y + h
-  local n = 0
-  for i = 1, m do
-    local record = cands[i]
+  local region = self._region
+  local pass = self._pass
+  local best, best_t, best_axis = nil, HUGE, 0
+  for i = 1, self._region_n do
+    local record = region[i]
     local rx, ry = record.x, record.y
-    local enter_x, exit_x, enter_y, exit_y = -HUGE, HUGE, -HUGE, HUGE
-    if dx > 0 then enter_x, exit_x = (rx - x1) / dx, (rx + record.width - x) / dx
-    elseif dx < 0 then enter_x, exit_x = (rx + record.width - x) / dx, (rx - x1) / dx end
-    if dy > 0 then enter_y, exit_y = (ry - y1) / dy, (ry + record.height - y) / dy
-    elseif dy < 0 then enter_y, exit_y = (ry + record.height - y) / dy, (ry - y1) / dy end
-    local first, exit = max(enter_x, enter_y), min(exit_x, exit_y)
-    if first < exit and first < 1 and exit > 0 then
-      n = n + 1
-      cands[n], times[n] = record, first
-      -- the axis it comes in across (box_enter's: x only when x is entered last)
-      axes[n] = enter_x > enter_y and 1 or 2
+    if rx < right and left < rx + record.width and ry < bottom and top < ry + record.height
+      and record._mark < pass then
+      -- (a division by a negative delta swaps them; by 0, the overlap makes them -inf
+      -- and inf: no branch on the direction)
+      local near_x, far_x = (rx - x1) / dx, (rx + record.width - x) / dx
+      local near_y, far_y = (ry - y1) / dy, (ry + record.height - y) / dy
+      local enter_x, enter_y = min(near_x, far_x), min(near_y, far_y)
+      local first, exit = max(enter_x, enter_y), min(max(near_x, far_x), max(near_y, far_y))
+      if first < exit and first < 1 and exit > 0 then
+        if first < 0 then -- overlapping at the start: minus the overlap's area
+          first = -(min(x1, rx + record.width) - max(x, rx)) * (min(y1, ry + record.height)
+            - max(y, ry))
+        end
+        if first < best_t or first == best_t and candidate_farther(best, record, x, y, w, h)
+        then
+          best, best_t = record, first
+          if enter_x > enter_y then best_axis = 1 else best_axis = 2 end
+        end
+      end
     end
   end
-  for i = 1, n do -- overlapping at the start: minus the overlap's area
-    if times[i] < 0 then
-      local r = cands[i]
-      times[i] = -(min(x1, r.x + r.width) - max(x, r.x)) * (min(y1, r.y + r.height) - max(y, r.y))
-    end
-  end
-  for i = 2, n do -- insertion by (t, distance), stable
-    local record, t, axis = cands[i], times[i], axes[i]
-    local j = i - 1
-    while j >= 1 and (times[j] > t or times[j] == t and candidate_farther(cands[j], record,
-      x, y, w, h)) do
-      cands[j + 1], times[j + 1], axes[j + 1] = cands[j], times[j], axes[j]
-      j = j - 1
-    end
-    cands[j + 1], times[j + 1], axes[j + 1] = record, t, axis
-  end
-  return n
+  return best, best_t, best_axis
 end
 
 -- Fills col for meeting `record` at leg time t (see leg_candidates) on the leg from (x, y)
@@ -618,19 +615,20 @@ end
 -- The move meets candidate k of its leg from (x, y) toward the goal: the filter's answer
 -- and its collision. Returns true and the next leg (its start and goal) when it stops
 -- there; nil when the leg goes on.
-local function meet(self, k, x, y, goal_x, goal_y)
-  local other = self._cands[k]
+local function meet(self, other, t, axis, x, y, goal_x, goal_y)
   local item, filter = self._item, self._filter
   local answer = "slide"
   if filter ~= nil then answer = filter(item, other.item.item) end
-  if not answer then return nil end
+  if not answer then
+    other._mark = self._pass -- ignored: passed over for the rest of this leg
+    return nil
+  end
   local response = response_of(self, answer, other.item.item)
-  other._visit = self._stamp
+  other._mark = self._stamp + MET
   local n = self._n + 1
   self._n = n
-  local t = self._times[k]
   local col = fill_col(self, col_at(self._out, self._out_pool, n), item, other, answer, t,
-    self._axes[k], x, y, self._w, self._h, goal_x, goal_y)
+    axis, x, y, self._w, self._h, goal_x, goal_y)
   if t < 0 or response == "cross" then -- crossed, or let out of it: the leg goes on
     if answer == "slide" then
       local s = col._slide
@@ -665,9 +663,21 @@ end
 -- One leg from (x, y) toward the goal: true and the next leg when something stops it,
 -- false and the goal when nothing does.
 local function run_leg(self, x, y, goal_x, goal_y)
-  local count = leg_candidates(self, x, y, goal_x - x, goal_y - y)
-  for k = 1, count do
-    local stop, next_x, next_y, next_goal_x, next_goal_y = meet(self, k, x, y, goal_x, goal_y)
+  local dx, dy = goal_x - x, goal_y - y
+  local w, h = self._w, self._h
+  local left, top, right, bottom = x, y, x + w, y + h
+  if dx < 0 then left = x + dx else right = right + dx end
+  if dy < 0 then top = y + dy else bottom = bottom + dy end
+  cover(self, left, top, right, bottom)
+  self._pass = self._pass + 1 -- (records this leg's filter ignores are marked with it)
+  -- the leg's signs, for fill_col
+  if dx > 0 then self._sx, self._fx, self._gx = -1, 0, -w else self._sx, self._fx, self._gx = 1, 1, 0 end
+  if dy > 0 then self._sy, self._fy, self._gy = -1, 0, -h else self._sy, self._fy, self._gy = 1, 1, 0 end
+  for _ = 1, self._region_n do -- (each round meets one candidate: at most all of them)
+    local other, t, axis = nearest(self, x, y, dx, dy, left, top, right, bottom)
+    if other == nil then break end
+    local stop, next_x, next_y, next_goal_x, next_goal_y = meet(self, other, t, axis, x, y,
+      goal_x, goal_y)
     if stop then return true, next_x, next_y, next_goal_x, next_goal_y end
   end
   return false, goal_x, goal_y, goal_x, goal_y
@@ -686,11 +696,19 @@ end
 -- before the plan is done) and _running set, which enter() then finds stale.
 function plan_move(self, proxy, goal_x, goal_y, filter, list, pool)
   self._running = true
-  self._own = self._world._records[proxy]
+  local own = self._world._records[proxy]
+  self._own = own
+  -- Marks: a move's marks begin at _stamp, a whole MARK_SPAN above the last move's; a
+  -- leg skips a record whose mark is at least its own (_stamp + leg): one its filter
+  -- ignored in this leg, and one the move met (_stamp + MET), the item itself too. One
+  -- comparison in the narrow phase's loop.
+  self._stamp = self._stamp + MARK_SPAN
+  self._pass = self._stamp
+  own._mark = self._stamp + MET
   self._item, self._w, self._h = proxy.item, proxy.width, proxy.height
   self._filter, self._out, self._out_pool = filter, list, pool
-  self._stamp = self._stamp + 1
   self._n = 0
+  self._region_right = -HUGE -- (no region yet: the first leg looks in the hash)
   local x, y = proxy.x, proxy.y
   -- LuaJIT shaping: the first two legs (all but a few moves) written out, not looped:
   -- inside a loop over legs, the narrow phase's values made LuaJIT abort its traces
@@ -756,7 +774,18 @@ function World:move(item, goal_x, goal_y, filter)
     proxy.x, proxy.y = x, y
     local record = self._world._records[proxy]
     record.x, record.y = x, y
-    self._world._actors:moved(record, x, y, proxy.width, proxy.height)
+    -- Loose cells: a moved item is registered in the cells of its box grown by a quarter
+    -- cell each way, and registered again only when its box leaves them (a hash lookup
+    -- finds it wherever its box is). Items that stay near where they are, or press on a
+    -- wall, cost nothing; bench/world.lua --way bump_boxes: N ns instead of M.
+    local hash = self._world._actors
+    local w, h = proxy.width, proxy.height
+    local cx0, cy0, cx1, cy1 = hash:cells_of(x, y, w, h)
+    if cx0 < record._cx0 or cy0 < record._cy0 or cx1 > record._cx1 or cy1 > record._cy1 then
+      local margin = self._margin
+      hash:remove(record)
+      hash:insert(record, x - margin, y - margin, w + 2 * margin, h + 2 * margin)
+    end
   end
   return x, y, self._move_cols, n
 end

@@ -68,7 +68,8 @@ local world = {}
 ---@field package _sx1? number
 ---@field package _sy1? number
 ---@field package _frame_in? integer the contacts call that last saw it in the world
----@field package _visit? integer the budge.bump move that last met it (its visited set)
+---@field package _mark? number budge.bump's mark: which move met it, or which leg's filter
+---ignored it (bump.lua, plan_move)
 
 ---A world of solids, actors and tile layers. Made by budge.new_world.
 ---@class budge.World
