@@ -200,10 +200,10 @@ describe("budge.bump", function()
         cols[1].overlaps, cols[1].touch.x, cols[1].touch.y, cols[1].ti, cols[1].slide.x,
         cols[1].slide.y})
       -- project and detectCollision report the overlap, with the touch where it starts
-      local cols, n = world:project("mover", 3, 3, 2, 2, 4, 5)
+      local projected, n = world:project("mover", 3, 3, 2, 2, 4, 5)
       assert.equal(1, n)
-      assert.is_true(cols[1].overlaps)
-      assert.same({3, 3, -4}, {cols[1].touch.x, cols[1].touch.y, cols[1].ti})
+      assert.is_true(projected[1].overlaps)
+      assert.same({3, 3, -4}, {projected[1].touch.x, projected[1].touch.y, projected[1].ti})
       local col = bump.rect.detectCollision(3, 3, 2, 2, 0, 0, 8, 8, 3, 3)
       assert.same({3, 8, 0, 1}, {col.touch.x, col.touch.y, col.normal.x, col.normal.y})
     end)

@@ -683,17 +683,24 @@ local function run_leg(self, x, y, goal_x, goal_y)
   return false, goal_x, goal_y, goal_x, goal_y
 end
 
--- bump's move loop on budge's narrow phase: each leg goes from (x, y) toward the goal and
--- asks the filter about what it meets, nearest first, until one answer stops it (touch,
--- slide, bounce, a custom response): that one's response gives the next leg (from the
--- touch; "cross", an ignored item and one the item starts inside go on along the leg, the
--- last let out). What a move met is not met again. Writes the collisions into `list` and
--- returns where the item ends and how many.
 -- LuaJIT shaping: called straight from world:move, never under pcall: traces cannot
 -- return through a pcall frame ("NYI: return to lower frame"), and under one every path
 -- after a loop of the move aborted (bench/world.lua --way bump_boxes: 15590 ns per move
 -- against 3529). A callback's error leaves the world as it was (nothing is written
 -- before the plan is done) and _running set, which enter() then finds stale.
+---bump's move loop on budge's narrow phase: each leg goes from (x, y) toward the goal and
+---asks the filter about what it meets, nearest first, until one answer stops it (touch,
+---slide, bounce, a custom response): that one's response gives the next leg (from the
+---touch; "cross", an ignored item and one the item starts inside go on along the leg, the
+---last let out). What a move met is not met again. Writes the collisions into `list`.
+---@param self budge.BumpWorld
+---@param proxy table the item's proxy box
+---@param goal_x number
+---@param goal_y number
+---@param filter? function
+---@param list table[] the cols list to fill
+---@param pool table[] its records
+---@return number x, number y, integer n where the item ends, and how many cols
 function plan_move(self, proxy, goal_x, goal_y, filter, list, pool)
   self._running = true
   local own = self._world._records[proxy]
