@@ -22,7 +22,7 @@ local entry = require(here .. ".entry")
 local world_module = require(here .. ".world")
 
 local describe, is_finite = box.describe, box.is_finite
-local box_enter = sweep.box_enter
+local box_enter, before = sweep.box_enter, sweep.before
 local check_span = entry.check_span
 local format, error, type, setmetatable, getmetatable = string.format, error, type,
   setmetatable, getmetatable
@@ -35,9 +35,6 @@ local bump = {
   _LICENSE = "MIT",
 }
 
--- A custom response's leg (world:addResponse) ends where the next begins; a move takes at
--- most this many (each excludes what the legs before it met, as bump does).
-local MAX_LEGS = 64
 -- A move's marks (see plan_move): legs count up from the move's stamp; what it met is
 -- marked MET above it; the next move's stamp is MARK_SPAN above (exact in a double for
 -- 2^53 / 2^20 moves).
@@ -141,8 +138,11 @@ local function detect_into(col, x1, y1, w1, h1, x2, y2, w2, h2, goal_x, goal_y)
     if ti == nil then return nil end
     if axis == 1 then nx, ny = dx > 0 and -1 or 1, 0 else nx, ny = 0, dy > 0 and -1 or 1 end
     tx, ty = x1 + dx * ti, y1 + dy * ti
-    -- exactly on the face it touches
-    if axis == 1 then tx = dx > 0 and x2 - w1 or x2 + w2 else ty = dy > 0 and y2 - h1 or y2 + h2 end
+    -- exactly on the face it touches, never an ulp into it (sweep.before)
+    if axis == 1 then
+      if dx > 0 then tx = before(x2, w1) else tx = x2 + w2 end
+    elseif dy > 0 then ty = before(y2, h1)
+    else ty = y2 + h2 end
   end
   col.overlaps, col.ti = overlaps, ti
   local m, normal, touch, ir, orr = col.move, col.normal, col.touch, col.itemRect, col.otherRect
@@ -240,14 +240,14 @@ local ENGINE = {[touch_response] = "touch", [cross_response] = "cross",
 ---@field package _world budge.World the budge world underneath
 ---@field package _proxies table<any, table> item -> the proxy box standing for it
 ---@field package _list table[] the proxies, unordered (a removal moves the last into the gap)
----@field package _engine table<string, string> response name -> what the move does: "touch",
----"cross", "slide", "bounce", or "custom" (it calls the response)
 ---@field package _filter? function the running move's filter (nil: "slide" on everything)
 ---@field package _running boolean a move or check is running (its callbacks may be called)
 ---@field package _stamp number where the running move's marks begin (records' _mark):
 ---_stamp + leg for one its leg's filter ignored, _stamp + MET for one it met (and its item)
 ---@field package _pass number _stamp + the running leg's number
 ---@field package _margin number how far a moved item's cells reach beyond its box
+---@field package _x0 number where the running move began (what a custom response is given)
+---@field package _y0 number
 ---@field package _region budge.Record[] what the move's first leg's rectangle overlaps
 ---(_region_n of them; the rectangle _region_left, _top, _right, _bottom)
 ---@field package _own budge.Record the running move's item's record (and _item, _w, _h)
@@ -263,6 +263,7 @@ local ENGINE = {[touch_response] = "touch", [cross_response] = "cross",
 ---@field package _project_cols table[] world:project's
 ---@field package _project_pool table[]
 ---@field package _found table[] the budge world's query output (scratch)
+---@field package _projecting boolean a project is running (a nested one gets new lists)
 local World = {}
 World.__index = World
 
@@ -309,17 +310,26 @@ end
 
 local plan_move -- (below)
 
--- True when a move or check of the world is on the stack now (its _running is set): a
--- callback of it called the world. False when that flag was left by a callback's error
--- (it is cleared then).
-local function still_running(self)
+-- True when `fn` (plan_move or World.project) is running on the stack now for this world:
+-- one of its callbacks called the world. False when the flag saying so was left by a
+-- callback's error.
+local function on_stack(self, fn)
   local level = 3
   while true do
     local info = debug.getinfo(level, "f")
-    if info == nil then break end
-    if info.func == plan_move then return true end
+    if info == nil then return false end
+    if info.func == fn then
+      local _, world = debug.getlocal(level, 1) -- (its self)
+      if world == self then return true end
+    end
     level = level + 1
   end
+end
+
+-- True when a move or check of the world is on the stack now (its _running is set); a
+-- flag left by a callback's error is cleared.
+local function still_running(self)
+  if on_stack(self, plan_move) then return true end
   self._running = false
   return false
 end
@@ -333,7 +343,8 @@ local function enter(self, call)
   end
   if self._running and MUTATES[call] and still_running(self) then
     error(format("world:%s was called from inside a move's filter or response: they may "
-      .. "project and query the world, not add, remove, update or move items in it", call), 3)
+      .. "project and query the world, not add, remove, update, move or check items in it or "
+      .. "add responses to it", call), 3)
   end
 end
 
@@ -368,7 +379,6 @@ function bump.newWorld(cell_size)
     _world = world_module.new_world({cell_size = cell_size}),
     _proxies = {},
     _list = {},
-    _engine = {},
     _filter = nil, -- the running move's filter (nil: the default, "slide" on everything)
     _running = false, -- a move or check is running (its filter or a response may be called)
     _stamp = 0, -- counts moves: what a move met carries its stamp (visited)
@@ -380,6 +390,7 @@ function bump.newWorld(cell_size)
     _check_cols = {}, _check_pool = {},
     _project_cols = {}, _project_pool = {},
     _found = {},
+    _projecting = false, -- a project is running (one its filter calls gets lists of its own)
   }, World)
   -- The filter a custom response is given: the move's, less what it met already (as bump
   -- does). Made once per world.
@@ -415,7 +426,6 @@ function World:addResponse(name, response)
     error(format("response must be a function, got %s", describe(response)), 2)
   end
   self.responses[name] = response
-  self._engine[name] = ENGINE[response] or "custom"
 end
 
 ---world:add(item, x, y, w, h): adds any value but nil (and NaN) as an item; returns it.
@@ -491,9 +501,13 @@ local function cut(list, n)
   for i = n + 1, #list do list[i] = nil end
 end
 
--- The response a filter's answer names (its entry in world._engine), or an error.
+-- What the move does for a filter's answer: "touch", "cross", "slide" or "bounce" when it
+-- names one of bump.responses (world.responses is read at each answer, so a response set
+-- there directly counts too), "custom" for another function; else an error.
 local function response_of(self, answer, other)
-  local response = self._engine[answer]
+  local fn = self.responses[answer]
+  local response = ENGINE[fn]
+  if response == nil and type(fn) == "function" then response = "custom" end
   if response == nil then
     error(format("filter must return the name of a response (\"touch\", \"cross\", \"slide\", "
       .. "\"bounce\" or one given to world:addResponse), or false/nil, got %s for %s",
@@ -502,10 +516,12 @@ local function response_of(self, answer, other)
   return response
 end
 
--- True when record a's centre is farther from the box's than record b's.
-local function candidate_farther(a, b, x, y, w, h)
-  return square_distance(x, y, w, h, a.x, a.y, a.width, a.height)
-    > square_distance(x, y, w, h, b.x, b.y, b.width, b.height)
+-- True when record b comes before record a met at the same time: its centre nearer the
+-- box's, or as near and added earlier.
+local function candidate_before(b, a, x, y, w, h)
+  local da = square_distance(x, y, w, h, a.x, a.y, a.width, a.height)
+  local db = square_distance(x, y, w, h, b.x, b.y, b.width, b.height)
+  return db < da or db == da and b.id < a.id
 end
 
 -- Makes the move's region (see plan_move) hold what the leg's rectangle overlaps: the
@@ -525,7 +541,7 @@ end
 -- passed over yet: its record, the leg time (an overlap at the start: minus its area,
 -- so the deepest first) and the axis it is entered across (1: x, 2: y; budge's corner
 -- rule: y when both at once), or nil. Ties go by the distance between centres, then by
--- the region's order. Entry and exit times are sweep.box_enter's (the same roundings);
+-- the order items were added. Entry and exit times are sweep.box_enter's (the same roundings);
 -- with no motion on an axis, the rectangle test made it overlap on that axis.
 -- LuaJIT shaping: one pass for the nearest, asked again only past what the filter lets
 -- through, instead of sorting every candidate: short loops of varying length (the sort,
@@ -552,7 +568,7 @@ local function nearest(self, x, y, dx, dy, left, top, right, bottom)
           first = -(min(x1, rx + record.width) - max(x, rx)) * (min(y1, ry + record.height)
             - max(y, ry))
         end
-        if first < best_t or first == best_t and candidate_farther(best, record, x, y, w, h)
+        if first < best_t or first == best_t and candidate_before(record, best, x, y, w, h)
         then
           best, best_t = record, first
           if enter_x > enter_y then best_axis = 1 else best_axis = 2 end
@@ -578,17 +594,17 @@ local function fill_col(self, col, item, record, kind, t, axis, x, y, w, h, goal
     col.otherRect
   col.overlaps, col.ti = false, t
   m.x, m.y = dx, dy
-  -- exactly on the face it touches (ax, ay: 1, 0 across x; 0, 1 across y). LuaJIT
-  -- shaping: arithmetic with the leg's signs, no branch: a branch here left its side
-  -- exit with too many live values for LuaJIT to compile ("register coalescing too
-  -- complex", 7330 aborts in 300 frames of bench/world.lua --way bump_boxes).
-  local ax = 2 - axis
-  local ay = 1 - ax
-  local sx, sy = self._sx, self._sy -- -1 moving right (down), 1 moving left (up)
-  normal.x, normal.y = ax * sx + 0, ay * sy + 0 -- (+ 0: never -0)
-  -- the face: rx - w moving right, rx + rw moving left (and likewise on y)
-  touch.x = ax * (rx + self._fx * rw + self._gx) + ay * (x + dx * t)
-  touch.y = ay * (ry + self._fy * rh + self._gy) + ax * (y + dy * t)
+  -- exactly on the face it touches, never an ulp into it (sweep.before: (rx - w) + w can
+  -- round past rx, and the next move would start inside and be let out through it)
+  if axis == 1 then
+    normal.x, normal.y = self._sx, 0
+    touch.y = y + dy * t
+    if dx > 0 then touch.x = before(rx, w) else touch.x = rx + rw end
+  else
+    normal.x, normal.y = 0, self._sy
+    touch.x = x + dx * t
+    if dy > 0 then touch.y = before(ry, h) else touch.y = ry + rh end
+  end
   ir.x, ir.y, ir.w, ir.h = x, y, w, h
   orr.x, orr.y, orr.w, orr.h = rx, ry, rw, rh
   return col
@@ -597,16 +613,21 @@ end
 -- The game's custom response to `col`: the goal it returns, and where the next leg starts
 -- (where the collisions it returns were projected from; with none, the move ends at the
 -- goal, as in bump).
-local function custom_response(self, name, col, x, y, w, h, goal_x, goal_y)
-  local new_x, new_y, cols, len = self.responses[name](self, col, x, y, w, h, goal_x, goal_y,
-    self._visited_filter)
-  if not (is_finite(new_x) and is_finite(new_y)) then
-    error(format("response %s must return the new goal (two finite numbers), got %s, %s",
-      describe(name), describe(new_x), describe(new_y)), game_level())
+local function custom_response(self, name, col, w, h, goal_x, goal_y)
+  -- (bump gives a response the position the move began at)
+  local new_x, new_y, cols, len = self.responses[name](self, col, self._x0, self._y0, w, h,
+    goal_x, goal_y, self._visited_filter)
+  local range = self._world.range
+  if not (is_finite(new_x) and is_finite(new_y)) or new_x < -range or new_x + w > range
+    or new_y < -range or new_y + h > range then
+    error(format("response %s must return the new goal (two finite numbers keeping the "
+      .. "item within the world's range, -%s to %s), got %s, %s", describe(name),
+      describe(range), describe(range), describe(new_x), describe(new_y)), game_level())
   end
-  if type(len) == "number" and len > 0 and type(cols) == "table" and type(cols[1]) == "table"
-    and type(cols[1].itemRect) == "table" then
-    local rect = cols[1].itemRect
+  local rect = type(len) == "number" and len > 0 and type(cols) == "table"
+    and type(cols[1]) == "table" and cols[1].itemRect
+  if type(rect) == "table" and is_finite(rect.x) and is_finite(rect.y) and rect.x >= -range
+    and rect.x + w <= range and rect.y >= -range and rect.y + h <= range then
     return new_x, new_y, rect.x, rect.y
   end
   return new_x, new_y, new_x, new_y
@@ -655,8 +676,8 @@ local function meet(self, other, t, axis, x, y, goal_x, goal_y)
     col.bounce = b
     return true, touch.x, touch.y, b.x, b.y
   end
-  local new_x, new_y, from_x, from_y = custom_response(self, answer, col, x, y, self._w,
-    self._h, goal_x, goal_y)
+  local new_x, new_y, from_x, from_y = custom_response(self, answer, col, self._w, self._h,
+    goal_x, goal_y)
   return true, from_x, from_y, new_x, new_y
 end
 
@@ -671,8 +692,8 @@ local function run_leg(self, x, y, goal_x, goal_y)
   cover(self, left, top, right, bottom)
   self._pass = self._pass + 1 -- (records this leg's filter ignores are marked with it)
   -- the leg's signs, for fill_col
-  if dx > 0 then self._sx, self._fx, self._gx = -1, 0, -w else self._sx, self._fx, self._gx = 1, 1, 0 end
-  if dy > 0 then self._sy, self._fy, self._gy = -1, 0, -h else self._sy, self._fy, self._gy = 1, 1, 0 end
+  if dx > 0 then self._sx = -1 else self._sx = 1 end
+  if dy > 0 then self._sy = -1 else self._sy = 1 end
   for _ = 1, self._region_n do -- (each round meets one candidate: at most all of them)
     local other, t, axis = nearest(self, x, y, dx, dy, left, top, right, bottom)
     if other == nil then break end
@@ -717,15 +738,17 @@ function plan_move(self, proxy, goal_x, goal_y, filter, list, pool)
   self._n = 0
   self._region_right = -HUGE -- (no region yet: the first leg looks in the hash)
   local x, y = proxy.x, proxy.y
+  self._x0, self._y0 = x, y
   -- LuaJIT shaping: the first two legs (all but a few moves) written out, not looped:
   -- inside a loop over legs, the narrow phase's values made LuaJIT abort its traces
-  -- ("register coalescing too complex").
-  local stopped = goal_x ~= x or goal_y ~= y
-  if stopped then stopped, x, y, goal_x, goal_y = run_leg(self, x, y, goal_x, goal_y) end
+  -- ("register coalescing too complex"). The first leg runs even for no motion: it
+  -- reports what the item overlaps. Every leg after the first begins where one stopped,
+  -- which the move then never meets again: there are at most as many legs as items.
+  local stopped
+  stopped, x, y, goal_x, goal_y = run_leg(self, x, y, goal_x, goal_y)
   if stopped and (goal_x ~= x or goal_y ~= y) then
     stopped, x, y, goal_x, goal_y = run_leg(self, x, y, goal_x, goal_y)
-    for _ = 3, MAX_LEGS do
-      if not stopped or goal_x == x and goal_y == y then break end
+    while stopped and (goal_x ~= x or goal_y ~= y) do
       stopped, x, y, goal_x, goal_y = run_leg(self, x, y, goal_x, goal_y)
     end
   end
@@ -838,44 +861,64 @@ function World:project(item, x, y, w, h, goal_x, goal_y, filter)
   if goal_y == nil then goal_y = y end
   check_finite(goal_x, "goalX", 3)
   check_finite(goal_y, "goalY", 3)
+  check_span(self._world, goal_x, w, "goalX", "the rectangle", 3)
+  check_span(self._world, goal_y, h, "goalY", "the rectangle", 3)
   check_filter(filter)
   filter = filter or default_filter
   local left, top = min(x, goal_x), min(y, goal_y)
   local found, count = self._world:query_rect(left, top, max(x, goal_x) + w - left,
     max(y, goal_y) + h - top, self._found)
+  -- The collisions first, the filter asked after: a filter may query the world (which
+  -- reuses the scratch `found`) or project again (which gets lists of its own).
   local list, pool = self._project_cols, self._project_pool
+  local nested = self._projecting and on_stack(self, World.project)
+  if nested then list, pool = {}, {} end
+  self._projecting = true
   local own = self._proxies[item]
   local n = 0
   for i = 1, count do
     local other = found[i]
-    if other ~= own then
-      local answer = filter(item, other.item)
-      if answer then
-        local col = detect_into(col_at(list, pool, n + 1), x, y, w, h, other.x, other.y,
-          other.width, other.height, goal_x, goal_y)
-        if col then
-          n = n + 1
-          col.item, col.other, col.type = item, other.item, answer
-          col.slide, col.bounce = nil, nil
-          insert_sorted(list, n)
-        end
-      end
-    end
     found[i] = nil
+    if other ~= own and detect_into(col_at(list, pool, n + 1), x, y, w, h, other.x, other.y,
+      other.width, other.height, goal_x, goal_y) then
+      n = n + 1
+      local col = list[n]
+      col.item, col.other, col.type = item, other.item, nil
+      col.slide, col.bounce = nil, nil
+    end
   end
-  cut(list, n)
-  return list, n
+  local kept = 0
+  for i = 1, n do
+    local col = list[i]
+    local answer = filter(item, col.other)
+    if answer then
+      kept = kept + 1
+      col.type = answer
+      list[i], list[kept] = list[kept], col -- (what was at kept was left out)
+      insert_sorted(list, kept)
+    end
+  end
+  cut(list, kept)
+  self._projecting = nested
+  return list, kept
 end
 
 -- queries --------------------------------------------------------------------------
 
--- The items of the proxies in found 1..count that `filter` (if any) accepts, in a new list.
+-- The items of the proxies in found 1..count that `filter` (if any) accepts, in a new list
+-- (copied before the filter is asked: it may query the world, which reuses `found`).
 local function items_of(found, count, filter)
-  local items, n = {}, 0
+  local items = {}
   for i = 1, count do
-    local item = found[i].item
+    items[i] = found[i].item
     found[i] = nil
-    if filter == nil or filter(item) then
+  end
+  if filter == nil then return items, count end
+  local n = 0
+  for i = 1, count do
+    local item = items[i]
+    items[i] = nil
+    if filter(item) then
       n = n + 1
       items[n] = item
     end
@@ -893,6 +936,8 @@ function World:queryPoint(x, y, filter)
   enter(self, "queryPoint")
   check_finite(x, "x", 3)
   check_finite(y, "y", 3)
+  check_span(self._world, x, 0, "x", "the point", 3)
+  check_span(self._world, y, 0, "y", "the point", 3)
   check_filter(filter)
   local found, count = self._world:query_point(x, y, self._found)
   return items_of(found, count, filter)
@@ -961,21 +1006,28 @@ function World:querySegmentWithCoords(x1, y1, x2, y2, filter)
   local found, count = segment_hits(self, x1, y1, x2, y2)
   local infos, n = {}, 0
   local dx, dy = x2 - x1, y2 - y1
-  for i = 1, count do
+  for i = 1, count do -- (all of them first: the filter may query the world, reusing found)
     local proxy = found[i]
     found[i] = nil
-    local item = proxy.item
-    if filter == nil or filter(item) then
-      local ti1, ti2 = segment_indices(proxy.x, proxy.y, proxy.width, proxy.height, x1, y1,
-        x2, y2, 0, 1)
-      if ti1 then -- (always: the segment passes through it)
-        n = n + 1
-        infos[n] = {item = item, ti1 = ti1, ti2 = ti2, x1 = x1 + dx * ti1, y1 = y1 + dy * ti1,
-          x2 = x1 + dx * ti2, y2 = y1 + dy * ti2}
-      end
+    local ti1, ti2 = segment_indices(proxy.x, proxy.y, proxy.width, proxy.height, x1, y1,
+      x2, y2, 0, 1)
+    if ti1 then -- (always: the segment passes through it)
+      n = n + 1
+      infos[n] = {item = proxy.item, ti1 = ti1, ti2 = ti2, x1 = x1 + dx * ti1,
+        y1 = y1 + dy * ti1, x2 = x1 + dx * ti2, y2 = y1 + dy * ti2}
     end
   end
-  return infos, n
+  if filter == nil then return infos, n end
+  local kept = 0
+  for i = 1, n do
+    local info = infos[i]
+    infos[i] = nil
+    if filter(info.item) then
+      kept = kept + 1
+      infos[kept] = info
+    end
+  end
+  return infos, kept
 end
 
 -- the rest of bump's API ---------------------------------------------------------------
