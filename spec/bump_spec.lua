@@ -452,6 +452,100 @@ describe("budge.bump", function()
     end)
   end)
 
+  describe("what a hostile review found", function()
+    it("stops exactly on a face: the next move does not start an ulp inside and pass through",
+      function()
+      local world = bump.newWorld(64)
+      world:add("p", 0, 0, 0.6, 1)
+      world:add("wall", 1.7, -10, 10, 20)
+      assert.is_true((1.7 - 0.6) + 0.6 > 1.7) -- (the rounding this is about)
+      local x = world:move("p", 5, 0)
+      assert.is_true(x + 0.6 <= 1.7)
+      assert.equal(x, (world:move("p", 5, 0)))
+      world:add("q", 0, -30, 1, 0.6)
+      world:add("floor", -5, -28.3, 10, 1) -- (falling onto it: y + 0.6 ends on its top)
+      local _, y = world:move("q", 0, -20)
+      assert.is_true(y + 0.6 <= -28.3)
+      assert.same({0, y}, xy(world:move("q", 0, -20)))
+    end)
+
+    it("lets a filter of project and of every query query and project the world", function()
+      local world = bump.newWorld(16)
+      for i = 1, 6 do world:add("b" .. i, i * 20, 0, 10, 10) end
+      local function busy() world:queryRect(0, 50, 1, 1); world:project("y", 0, 50, 1, 1) end
+      local _, n = world:project("z", 0, 0, 10, 10, 200, 0, function() busy(); return "cross" end)
+      assert.equal(6, n)
+      assert.same({6, 6, 6}, {select(2, world:queryRect(0, 0, 200, 10, function() busy(); return true end)),
+        select(2, world:querySegment(0, 5, 200, 5, function() busy(); return true end)),
+        select(2, world:querySegmentWithCoords(0, 5, 200, 5, function() busy(); return true end))})
+    end)
+
+    it("reports what the item overlaps on a move to where it is, and leaves it there", function()
+      local world = bump.newWorld()
+      world:add("o", 0, 0, 10, 2)
+      world:add("m", 8, 0, 10, 10)
+      local x, y, cols, len = world:check("m", 8, 0, function() return "touch" end)
+      -- (the minimum displacement: 2 up or 2 right, as near: on y, as bump does)
+      assert.same({8, 0, 1, "o", true, -4, 8, 2, 0, 1}, {x, y, len, cols[1].other,
+        cols[1].overlaps, cols[1].ti, cols[1].touch.x, cols[1].touch.y, cols[1].normal.x,
+        cols[1].normal.y})
+    end)
+
+    it("breaks exact ties by the order items were added, in move and in project alike", function()
+      for _, order in ipairs({{"R", "L"}, {"L", "R"}}) do
+        local world = bump.newWorld(4)
+        world:add("m", 0, 0, 10, 10)
+        local at = {R = 5, L = -5}
+        for _, name in ipairs(order) do world:add(name, at[name], 20, 10, 10) end
+        local _, _, cols = world:move("m", 0, 40, function() return "touch" end)
+        local projected = world:project("m", 0, 0, 10, 10, 0, 40)
+        assert.same({order[1], order[1]}, {cols[1].other, projected[1].other})
+      end
+    end)
+
+    it("bounces as often as a move needs (bump's loop has no cap)", function()
+      local world = bump.newWorld(32)
+      for col = 0, 400 do -- a corridor of short tiles, 25 px high
+        world:add("top" .. col, col * 10, 0, 10, 10)
+        world:add("bottom" .. col, col * 10, 40, 10, 10)
+      end
+      world:add("ball", 0, 15, 5, 5)
+      local x, y, _, len = world:move("ball", 4000, 20015, function() return "bounce" end)
+      assert.same({4000, 15, 800}, {x, y, len})
+      local peer = load_peer()
+      if peer then -- (bump's own count)
+        local theirs = peer.newWorld(32)
+        for col = 0, 400 do
+          theirs:add("top" .. col, col * 10, 0, 10, 10)
+          theirs:add("bottom" .. col, col * 10, 40, 10, 10)
+        end
+        theirs:add("ball", 0, 15, 5, 5)
+        assert.equal(800, select(4, theirs:move("ball", 4000, 20015, function() return "bounce" end)))
+      end
+    end)
+
+    it("clears a busy flag a filter's error left, for its own world only", function()
+      local a, b = bump.newWorld(16), bump.newWorld(16)
+      a:add("a", 0, 0, 10, 10)
+      a:add("wall", 20, 0, 10, 10)
+      b:add("b", 0, 0, 10, 10)
+      b:add("wall", 20, 0, 10, 10)
+      assert.is_false(pcall(a.move, a, "a", 50, 0, function() error("boom") end))
+      b:move("b", 50, 0, function() a:add("new", 100, 100, 1, 1); return "slide" end)
+      assert.is_true(a:hasItem("new"))
+      assert.equal("new2", a:add("new2", 200, 200, 1, 1))
+    end)
+
+    it("names the argument of a projection or a point beyond the world's range", function()
+      local world = bump.newWorld()
+      local function message(fn) return select(2, pcall(fn)) end
+      assert.matches("^spec/bump_spec.lua:%d+: goalX must keep the rectangle within this "
+        .. "world's range", message(function() world:project("z", 0, 0, 1, 1, 1e300, 0) end))
+      assert.matches("^spec/bump_spec.lua:%d+: x must keep the point within this world's "
+        .. "range", message(function() world:queryPoint(1e300, 0) end))
+    end)
+  end)
+
   describe("errors", function()
     local function message(fn)
       local ok, err = pcall(fn)
