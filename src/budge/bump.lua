@@ -253,8 +253,6 @@ local ENGINE = {[touch_response] = "touch", [cross_response] = "cross",
 ---@field package _own budge.Record the running move's item's record (and _item, _w, _h)
 ---@field package _out table[] the running move's cols list and their pool (_out_pool)
 ---@field package _n integer how many cols it has
----@field package _sx integer its leg's signs and faces (fill_col): -1 moving right, 1 left
----@field package _sy integer likewise down and up
 ---@field package _visited_filter function the filter a custom response is given
 ---@field package _move_cols table[] world:move's list (reused), its records from _move_pool
 ---@field package _move_pool table[]
@@ -581,7 +579,7 @@ end
 
 -- Fills col for meeting `record` at leg time t (see leg_candidates) on the leg from (x, y)
 -- toward (goal_x, goal_y).
-local function fill_col(self, col, item, record, kind, t, axis, x, y, w, h, goal_x, goal_y)
+local function fill_col(col, item, record, kind, t, axis, x, y, w, h, goal_x, goal_y)
   local rx, ry, rw, rh = record.x, record.y, record.width, record.height
   col.item, col.other, col.type = item, record.item.item, kind
   col.slide, col.bounce = nil, nil
@@ -596,12 +594,13 @@ local function fill_col(self, col, item, record, kind, t, axis, x, y, w, h, goal
   m.x, m.y = dx, dy
   -- exactly on the face it touches, never an ulp into it (sweep.before: (rx - w) + w can
   -- round past rx, and the next move would start inside and be let out through it)
+  -- (the normal: minus the sign of the motion across the face, which is not 0)
   if axis == 1 then
-    normal.x, normal.y = self._sx, 0
+    normal.x, normal.y = -dx / abs(dx) + 0, 0
     touch.y = y + dy * t
     if dx > 0 then touch.x = before(rx, w) else touch.x = rx + rw end
   else
-    normal.x, normal.y = 0, self._sy
+    normal.x, normal.y = 0, -dy / abs(dy) + 0
     touch.x = x + dx * t
     if dy > 0 then touch.y = before(ry, h) else touch.y = ry + rh end
   end
@@ -648,7 +647,7 @@ local function meet(self, other, t, axis, x, y, goal_x, goal_y)
   other._mark = self._stamp + MET
   local n = self._n + 1
   self._n = n
-  local col = fill_col(self, col_at(self._out, self._out_pool, n), item, other, answer, t,
+  local col = fill_col(col_at(self._out, self._out_pool, n), item, other, answer, t,
     axis, x, y, self._w, self._h, goal_x, goal_y)
   if t < 0 or response == "cross" then -- crossed, or let out of it: the leg goes on
     if answer == "slide" then
@@ -686,14 +685,12 @@ end
 local function run_leg(self, x, y, goal_x, goal_y)
   local dx, dy = goal_x - x, goal_y - y
   local w, h = self._w, self._h
-  local left, top, right, bottom = x, y, x + w, y + h
-  if dx < 0 then left = x + dx else right = right + dx end
-  if dy < 0 then top = y + dy else bottom = bottom + dy end
+  -- LuaJIT shaping: min and max, no branch on the direction (each branch between the
+  -- move's loops is a side trace with its own copy of the code up to the next loop)
+  local left, top = min(x, goal_x), min(y, goal_y)
+  local right, bottom = max(x, goal_x) + w, max(y, goal_y) + h
   cover(self, left, top, right, bottom)
   self._pass = self._pass + 1 -- (records this leg's filter ignores are marked with it)
-  -- the leg's signs, for fill_col
-  if dx > 0 then self._sx = -1 else self._sx = 1 end
-  if dy > 0 then self._sy = -1 else self._sy = 1 end
   for _ = 1, self._region_n do -- (each round meets one candidate: at most all of them)
     local other, t, axis = nearest(self, x, y, dx, dy, left, top, right, bottom)
     if other == nil then break end
