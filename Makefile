@@ -10,10 +10,11 @@ lint:
 spec:
 	busted
 
-# World bench: LuaJIT at full size, Lua 5.4 with fewer frames (it is ~10x slower).
+# World bench: LuaJIT at full size, Lua 5.4 with fewer frames (it is ~10x slower); each
+# writes its table into the README (between its markers), with bump.lua beside it when found.
 bench-world:
-	luajit bench/world.lua --runs 3
-	lua5.4 bench/world.lua --runs 3 --frames 60
+	BUMP_PATH=$${BUMP_PATH:-../shared/peers/bump.lua-3.1.7} luajit bench/world.lua --runs 5 --readme README.md
+	BUMP_PATH=$${BUMP_PATH:-../shared/peers/bump.lua-3.1.7} lua5.4 bench/world.lua --runs 5 --frames 60 --readme README.md
 	luajit bench/platforms.lua --runs 5
 	lua5.4 bench/platforms.lua --runs 3 --frames 100
 	BUMP_PATH=$${BUMP_PATH:-../shared/peers/bump.lua-3.1.7} luajit bench/contacts.lua --runs 5
