@@ -4,12 +4,13 @@
 --
 -- Every bump item is an actor of a budge world, standing for itself through a proxy box
 -- the front end owns (the game's own values are keys, never written to), so every item
--- can block every other, as in bump. world:move is budge's "swept" method (the straight
--- line to the goal, then a slide along what it met), asked through the game's filter;
--- the collision records are bump's, filled from budge's contacts. world:project and
--- bump.rect.detectCollision answer with the same rules: the exact-corner tie lands on
--- the top or bottom face, and a box that starts inside another is let out, never backed
--- out along its move.
+-- can block every other, as in bump. world:move runs bump's response loop (legs toward
+-- the goal; touch, cross, slide, bounce and custom responses; what a move met is not met
+-- again) on budge's narrow phase: the items come from the world's spatial hash, entry
+-- times are sweep.box_enter's, stops are placed by sweep.before, and the filter is asked
+-- only about what a leg meets, nearest first. world:project and bump.rect.detectCollision
+-- answer with the same rules: the exact-corner tie lands on the top or bottom face, and a
+-- box that starts inside another is let out, never backed out along its move.
 --
 -- A move allocates nothing once the world is warm: the `cols` list it returns, and the
 -- records in it, belong to the world and are reused by its next move (world:check and
