@@ -17,9 +17,9 @@ bench-world:
 	BUMP_PATH=$${BUMP_PATH:-../shared/peers/bump.lua-3.1.7} lua5.4 bench/world.lua --runs 5 --frames 60 --readme README.md
 	luajit bench/platforms.lua --runs 5
 	lua5.4 bench/platforms.lua --runs 3 --frames 100
-	BUMP_PATH=$${BUMP_PATH:-../shared/peers/bump.lua-3.1.7} luajit bench/contacts.lua --runs 5
-	BUMP_PATH=$${BUMP_PATH:-../shared/peers/bump.lua-3.1.7} luajit bench/contacts.lua --runs 5 --budget large
-	BUMP_PATH=$${BUMP_PATH:-../shared/peers/bump.lua-3.1.7} lua5.4 bench/contacts.lua --runs 3 --frames 60
+	BUMP_PATH=$${BUMP_PATH:-../shared/peers/bump.lua-3.1.7} luajit bench/contacts.lua --runs 5 --readme README.md
+	BUMP_PATH=$${BUMP_PATH:-../shared/peers/bump.lua-3.1.7} luajit bench/contacts.lua --runs 5 --budget large --readme README.md
+	BUMP_PATH=$${BUMP_PATH:-../shared/peers/bump.lua-3.1.7} lua5.4 bench/contacts.lua --runs 5 --frames 60 --readme README.md
 
 # Speed against accuracy: the scenario catalogue and the world bench scene for every
 # method on LuaJIT and Lua 5.4 (median of 5 runs), then the charts in docs/.
@@ -54,8 +54,8 @@ screenshots:
 # Lua 5.4.
 bench-game:
 	@sh tools/deps.sh luajit lua5.4
-	luajit bench/game.lua --frames 5000 --runs 3
-	lua5.4 bench/game.lua --frames 5000 --runs 3
+	luajit bench/game.lua --frames 5000 --runs 5 --readme examples/platformer/README.md
+	lua5.4 bench/game.lua --frames 5000 --runs 5 --readme examples/platformer/README.md
 
 # The example platformer under LÖVE (examples/platformer). Without a display it says how
 # to run its scripted mode instead.
@@ -70,4 +70,4 @@ game:
 # How much machine code budge makes LuaJIT compile, against its default budget.
 bench-jit:
 	@sh tools/deps.sh luajit
-	luajit bench/jit.lua --frames 3000 --why 8
+	luajit bench/jit.lua --frames 3000 --why 8 --readme README.md

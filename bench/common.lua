@@ -80,4 +80,29 @@ function common.fresh_runs(ways, runs, fields, command)
   return results
 end
 
+---Replaces what lies between the markers `<!-- KEY -->` and `<!-- end KEY -->` in the file
+---with `lines`: the README's tables are written by the benches, never typed by hand.
+---@param path string
+---@param key string
+---@param lines string[]
+function common.write_readme(path, key, lines)
+  local begin_mark, end_mark = ("<!-- %s -->"):format(key), ("<!-- end %s -->"):format(key)
+  local file = assert(io.open(path, "r"))
+  local text = file:read("*a")
+  file:close()
+  local _, last = text:find(begin_mark, 1, true)
+  local tail = text:find(end_mark, 1, true)
+  assert(last and tail and tail > last, "no markers " .. begin_mark .. " in " .. path)
+  text = text:sub(1, last) .. "\n" .. table.concat(lines, "\n") .. "\n" .. text:sub(tail)
+  file = assert(io.open(path, "w"))
+  file:write(text)
+  file:close()
+  print("written into " .. path)
+end
+
+---The interpreter's short name in a README marker: "luajit" or "lua5.4".
+function common.key()
+  return rawget(_G, "jit") and "luajit" or (_VERSION:gsub("Lua ", "lua"))
+end
+
 return common

@@ -27,7 +27,7 @@ local scene = require("fixtures.scene")
 local MAP, TILE = scene.MAP, scene.TILE
 
 local options = common.options(arg, {runs = 5, frames = 300, way = "", seed = 12345,
-  walkers = 1000, coins = 200, bullets = 100, budget = "default"})
+  walkers = 1000, coins = 200, bullets = 100, budget = "default", readme = ""})
 local jit = rawget(_G, "jit")
 if jit and options.way ~= "" and options.budget == "large" then
   jit.opt.start("maxtrace=4000", "maxmcode=4096") -- a budget this scene never runs out of
@@ -225,9 +225,21 @@ print(("bench/contacts.lua on %s (%s JIT budget), %s: %d walkers, %d coin sensor
   options.bullets, options.frames, options.runs))
 print(("%-24s %14s %16s %16s %10s"):format("way", "moves ns/actor", "contacts ns/actor",
   "contacts/frame", "KB/frame"))
+local lines = {("`%s bench/contacts.lua --runs %d --frames %d --budget %s`, %s, on %s, %s: ns "
+  .. "per actor per frame, median of %d fresh processes (the ways interleaved)."):format(
+  interpreter, options.runs, options.frames, options.budget, os.date("!%Y-%m-%d"),
+  common.interpreter(), common.machine(), options.runs), "",
+  "| way | moves | `contacts` | contacts per frame | KB/frame |", "|---|---|---|---|---|"}
 for _, way in ipairs(ways) do
   local r = results[way]
-  print(("%-24s %14.0f %16s %16.1f %10.2f"):format(way == "budge" and "budge" or "bump.lua 3.1.7 (cross)",
-    common.median(r[1]), way == "budge" and ("%.0f"):format(common.median(r[2])) or "-",
+  local name = way == "budge" and "budge" or "bump.lua 3.1.7 (cross)"
+  local contacts = way == "budge" and ("%.0f"):format(common.median(r[2])) or "-"
+  print(("%-24s %14.0f %16s %16.1f %10.2f"):format(name, common.median(r[1]), contacts,
     common.median(r[3]), common.median(r[4])))
+  lines[#lines + 1] = ("| %s | %.0f | %s | %.1f | %.2f |"):format(name, common.median(r[1]),
+    contacts, common.median(r[3]), common.median(r[4]))
+end
+if options.readme ~= "" then
+  common.write_readme(options.readme, ("bench/contacts.lua %s %s"):format(common.key(),
+    options.budget), lines)
 end

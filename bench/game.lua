@@ -12,7 +12,7 @@ package.path = "./examples/platformer/?.lua;./src/?.lua;./src/?/init.lua;./?.lua
   .. package.path
 local common = require("bench.common")
 
-local options = common.options(arg, {frames = 5000, runs = 3, way = ""})
+local options = common.options(arg, {frames = 5000, runs = 3, way = "", readme = ""})
 local jit = rawget(_G, "jit")
 
 local function play()
@@ -60,8 +60,19 @@ print(("bench/game.lua on %s, %s: the platformer's play-through, %d frames, medi
 print(("%-22s %12s %8s %10s %8s"):format("way", "us/frame", "traces", "mcode KB", "flushes"))
 local names = {default = "JIT, default budget", large = "JIT, raised budget", off = "JIT off",
   plain = "interpreter"}
+local lines = {("`%s bench/game.lua --frames %d --runs %d`, %s, on %s, %s: the play-through "
+  .. "for %d frames, median of %d fresh processes (the ways interleaved)."):format(interpreter,
+  options.frames, options.runs, os.date("!%Y-%m-%d"), common.interpreter(), common.machine(),
+  options.frames, options.runs), "",
+  "| way | µs/frame | traces | KB of machine code | flushes |", "|---|---|---|---|---|"}
 for _, way in ipairs(ways) do
   local r = results[way]
-  print(("%-22s %12.1f %8.0f %10.0f %8.0f"):format(names[way], common.median(r[1]),
-    common.median(r[2]), common.median(r[3]), common.median(r[4])))
+  local us, traces, kb, flushes = common.median(r[1]), common.median(r[2]),
+    common.median(r[3]), common.median(r[4])
+  print(("%-22s %12.1f %8.0f %10.0f %8.0f"):format(names[way], us, traces, kb, flushes))
+  lines[#lines + 1] = ("| %s | %.1f | %.0f | %.0f | %.0f |"):format(names[way], us, traces, kb,
+    flushes)
+end
+if options.readme ~= "" then
+  common.write_readme(options.readme, "bench/game.lua " .. common.key(), lines)
 end

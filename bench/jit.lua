@@ -20,7 +20,7 @@ local levels = require("fixtures.levels")
 local runner_logic = require("examples.demo.runner")
 local scene = require("fixtures.scene")
 
-local options = common.options(arg, {frames = 3000, why = 0})
+local options = common.options(arg, {frames = 3000, why = 0, readme = ""})
 local vmdef = require("jit.vmdef")
 
 -- "file:line: reason" for an aborted trace, as luajit -jv words it.
@@ -119,6 +119,11 @@ end
 
 print(("budge JIT budget on %s, %s; %d frames per scene"):format(common.interpreter(),
   common.machine(), options.frames))
+local lines = {("`luajit bench/jit.lua --frames %d`, %s, on %s, %s: one run (identical runs "
+  .. "vary by about 20%%: what LuaJIT compiles depends on timing)."):format(options.frames,
+  os.date("!%Y-%m-%d"), common.interpreter(), common.machine()), "",
+  "| scene | budget | flushes | aborts | traces | KB of machine code | ms/frame |",
+  "|---|---|---|---|---|---|---|"}
 print(("%-11s %-8s %8s %8s %8s %10s %12s"):format("scene", "budget", "flushes", "aborts",
   "traces", "mcode KB", "ms/frame"))
 for _, entry in ipairs({{"platformer", platformer}, {"crowd", crowd}}) do
@@ -126,6 +131,8 @@ for _, entry in ipairs({{"platformer", platformer}, {"crowd", crowd}}) do
     local result = run(entry[2], options.frames, budget)
     print(("%-11s %-8s %8d %8d %8d %10.0f %12.3f"):format(entry[1], budget, result.flushes,
       result.aborts, result.traces, result.kb, result.ms_per_frame))
+    lines[#lines + 1] = ("| %s | %s | %d | %d | %d | %.0f | %.3f |"):format(entry[1], budget,
+      result.flushes, result.aborts, result.traces, result.kb, result.ms_per_frame)
     if options.why > 0 then -- the most frequent abort reasons
       local list = {}
       for reason, count in pairs(result.reasons) do list[#list + 1] = {reason, count} end
@@ -137,3 +144,4 @@ for _, entry in ipairs({{"platformer", platformer}, {"crowd", crowd}}) do
   end
 end
 jit.opt.start("maxtrace=1000", "maxmcode=512")
+if options.readme ~= "" then common.write_readme(options.readme, "bench/jit.lua", lines) end

@@ -275,18 +275,5 @@ say("Most KB allocated per frame (GC stopped, after warm-up): " .. table.concat(
   .. ". The tile layer, boxes and merged boxes end every actor where the reference does.")
 
 if options.readme ~= "" then -- the table into the README, between this interpreter's markers
-  local key = rawget(_G, "jit") and "luajit" or _VERSION:gsub("Lua ", "lua")
-  local begin_mark = ("<!-- bench/world.lua %s -->"):format(key)
-  local end_mark = ("<!-- end bench/world.lua %s -->"):format(key)
-  local file = assert(io.open(options.readme, "r"))
-  local text = file:read("*a")
-  file:close()
-  local first, last = text:find(begin_mark, 1, true)
-  local tail = text:find(end_mark, 1, true)
-  assert(first and tail and tail > last, "no markers " .. begin_mark .. " in " .. options.readme)
-  text = text:sub(1, last) .. "\n" .. table.concat(lines, "\n") .. "\n" .. text:sub(tail)
-  file = assert(io.open(options.readme, "w"))
-  file:write(text)
-  file:close()
-  print("written into " .. options.readme)
+  common.write_readme(options.readme, "bench/world.lua " .. common.key(), lines)
 end
