@@ -536,6 +536,40 @@ describe("budge.bump", function()
       assert.equal("new2", a:add("new2", 200, 200, 1, 1))
     end)
 
+    it("(a second review) keeps an overlap an overlap when its measure underflows, agrees "
+      .. "with project at an entry that rounds to just under 1, orders overlaps by bump's "
+      .. "measure, and never steps back into what touches the trailing edge", function()
+      local s = 1e-162
+      local world = bump.newWorld()
+      world:add("me", 0, 0, 2 * s, 2 * s)
+      world:add("o", s, s, 2 * s, 2 * s)
+      local x, _, cols, len = world:check("me", 4 * s, 0)
+      assert.same({4 * s, 1, true}, {x, len, cols[1].overlaps})
+      assert.is_true(cols[1].ti < 0)
+      -- the entry at (1.7 - 0.8) / 0.9 rounds under 1, but the goal only touches
+      local edge = bump.newWorld()
+      edge:add("me", 0.6, 0, 0.2, 1)
+      edge:add("o", 1.7, 0, 1, 1)
+      assert.same({0, 0}, {select(4, edge:check("me", 1.5, 0)),
+        select(2, edge:project("me", 0.6, 0, 0.2, 1, 1.5, 0))})
+      -- overlaps in bump's order (A: -36, B: -25), in move and project alike
+      local deep = bump.newWorld()
+      deep:add("me", 0, 0, 10, 10)
+      deep:add("A", 4, 4, 2, 2)
+      deep:add("B", 5, 5, 10, 10)
+      local _, _, moved = deep:check("me", 0, -30, function() return "cross" end)
+      local projected = deep:project("me", 0, 0, 10, 10, 0, -30, function() return "cross" end)
+      assert.same({"A", -36, "B", -25}, {moved[1].other, moved[1].ti, moved[2].other, moved[2].ti})
+      assert.same({"A", "B"}, {projected[1].other, projected[2].other})
+      -- pressing on a wall it touches already, with something touching its back
+      local back = bump.newWorld()
+      back:add("me", 0.4, 0, 0.3, 1)
+      back:add("wall", 0.7, 0, 1, 1)
+      back:add("behind", -0.6, 0, 1, 1)
+      assert.equal(0.4, (back:move("me", 5.4, 0)))
+      assert.equal(0, select(4, back:check("me", 0.4, 0))) -- (it overlaps nothing)
+    end)
+
     it("names the argument of a projection or a point beyond the world's range", function()
       local world = bump.newWorld()
       local function message(fn) return select(2, pcall(fn)) end

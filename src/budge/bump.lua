@@ -38,7 +38,8 @@ local bump = {
 
 -- A move's marks (see plan_move): legs count up from the move's stamp; what it met is
 -- marked MET above it; the next move's stamp is MARK_SPAN above (exact in a double for
--- 2^53 / 2^20 moves).
+-- 2^53 / 2^20 moves). A move of more than 2^19 legs (each meets a new item) would reach
+-- MET: far beyond any scene.
 local MET, MARK_SPAN = 2 ^ 19, 2 ^ 20
 
 -- rect helpers (bump.rect) ---------------------------------------------------------
@@ -112,14 +113,25 @@ local function square_distance(x1, y1, w1, h1, x2, y2, w2, h2)
   return dx * dx + dy * dy
 end
 
+-- bump's measure of how deep (x1, y1, w1, h1) starts inside (x2, y2, w2, h2), as a
+-- negative ti: minus the item's size clipped to the nearest corner of their Minkowski
+-- difference, on each axis, multiplied; never 0 or -0 (an underflow would make it read as
+-- a touch at the start), so an overlap always sorts first.
+local SMALLEST = 2 ^ -1074
+local function overlap_ti(x1, y1, w1, h1, x2, y2, w2, h2)
+  local x, y, w, h = rect_diff(x1, y1, w1, h1, x2, y2, w2, h2)
+  local px, py = nearest_corner(x, y, w, h, 0, 0)
+  return min(-min(w1, abs(px)) * min(h1, abs(py)), -SMALLEST), px, py
+end
+
 -- Fills `col` (a record with the tables move, normal, touch, itemRect and otherRect) with
 -- what the rectangle (x1, y1, w1, h1) moving to (goal_x, goal_y) meets of (x2, y2, w2,
 -- h2), by budge's rules; returns col, or nil when it meets nothing.
 -- * Moving into it from outside: `ti` is the fraction of the move where it touches, and
 --   the normal is the face's; aimed exactly at a corner, the top or bottom face (budge's
 --   corner rule: it lands on it).
--- * Overlapping it at the start: `overlaps` is true and `ti` is minus the overlap's area
---   (so the deepest sorts first). Standing still, `touch` is the nearest place outside
+-- * Overlapping it at the start: `overlaps` is true and `ti` is negative (overlap_ti:
+--   the deepest sorts first). Standing still, `touch` is the nearest place outside
 --   (the minimum displacement, on y when x and y are as near), with its normal; moving,
 --   the box is let out: `touch` is where it starts and the normal that displacement's.
 local function detect_into(col, x1, y1, w1, h1, x2, y2, w2, h2, goal_x, goal_y)
@@ -127,9 +139,8 @@ local function detect_into(col, x1, y1, w1, h1, x2, y2, w2, h2, goal_x, goal_y)
   local ti, nx, ny, tx, ty
   local overlaps = is_intersecting(x1, y1, w1, h1, x2, y2, w2, h2)
   if overlaps then
-    local x, y, w, h = rect_diff(x1, y1, w1, h1, x2, y2, w2, h2)
-    local px, py = nearest_corner(x, y, w, h, 0, 0)
-    ti = -min(w1, abs(px)) * min(h1, abs(py))
+    local px, py
+    ti, px, py = overlap_ti(x1, y1, w1, h1, x2, y2, w2, h2)
     if abs(px) < abs(py) then py = 0 else px = 0 end
     nx, ny = sign(px), sign(py)
     if dx == 0 and dy == 0 then tx, ty = x1 + px, y1 + py else tx, ty = x1, y1 end
@@ -141,8 +152,8 @@ local function detect_into(col, x1, y1, w1, h1, x2, y2, w2, h2, goal_x, goal_y)
     tx, ty = x1 + dx * ti, y1 + dy * ti
     -- exactly on the face it touches, never an ulp into it (sweep.before)
     if axis == 1 then
-      if dx > 0 then tx = before(x2, w1) else tx = x2 + w2 end
-    elseif dy > 0 then ty = before(y2, h1)
+      if dx > 0 then tx = before(x2, w1, x1) else tx = x2 + w2 end
+    elseif dy > 0 then ty = before(y2, h1, y1)
     else ty = y2 + h2 end
   end
   col.overlaps, col.ti = overlaps, ti
@@ -563,9 +574,8 @@ local function nearest(self, x, y, dx, dy, left, top, right, bottom)
       local enter_x, enter_y = min(near_x, far_x), min(near_y, far_y)
       local first, exit = max(enter_x, enter_y), min(max(near_x, far_x), max(near_y, far_y))
       if first < exit and first < 1 and exit > 0 then
-        if first < 0 then -- overlapping at the start: minus the overlap's area
-          first = -(min(x1, rx + record.width) - max(x, rx)) * (min(y1, ry + record.height)
-            - max(y, ry))
+        if first < 0 then -- overlapping at the start: bump's negative measure of it
+          first = overlap_ti(x, y, w, h, rx, ry, record.width, record.height)
         end
         if first < best_t or first == best_t and candidate_before(record, best, x, y, w, h)
         then
@@ -597,10 +607,10 @@ local function fill_col(col, item, record, kind, t, axis, x, y, w, h, goal_x, go
   -- round past rx, and the next move would start inside and be let out through it)
   if axis == 1 then
     normal.y, touch.y = 0, y + dy * t
-    if dx > 0 then normal.x, touch.x = -1, before(rx, w) else normal.x, touch.x = 1, rx + rw end
+    if dx > 0 then normal.x, touch.x = -1, before(rx, w, x) else normal.x, touch.x = 1, rx + rw end
   else
     normal.x, touch.x = 0, x + dx * t
-    if dy > 0 then normal.y, touch.y = -1, before(ry, h) else normal.y, touch.y = 1, ry + rh end
+    if dy > 0 then normal.y, touch.y = -1, before(ry, h, y) else normal.y, touch.y = 1, ry + rh end
   end
   ir.x, ir.y, ir.w, ir.h = x, y, w, h
   orr.x, orr.y, orr.w, orr.h = rx, ry, rw, rh
@@ -863,8 +873,9 @@ function World:project(item, x, y, w, h, goal_x, goal_y, filter)
   check_filter(filter)
   filter = filter or default_filter
   local left, top = min(x, goal_x), min(y, goal_y)
-  local found, count = self._world:query_rect(left, top, max(x, goal_x) + w - left,
-    max(y, goal_y) + h - top, self._found)
+  local right, bottom = max(x, goal_x) + w, max(y, goal_y) + h
+  local found, count = self._world:query_rect(left, top, right - left, bottom - top,
+    self._found)
   -- The collisions first, the filter asked after: a filter may query the world (which
   -- reuses the scratch `found`) or project again (which gets lists of its own).
   local list, pool = self._project_cols, self._project_pool
@@ -876,8 +887,10 @@ function World:project(item, x, y, w, h, goal_x, goal_y, filter)
   for i = 1, count do
     local other = found[i]
     found[i] = nil
-    if other ~= own and detect_into(col_at(list, pool, n + 1), x, y, w, h, other.x, other.y,
-      other.width, other.height, goal_x, goal_y) then
+    -- (the same rectangle test as a move's legs, so both agree at rounding edges)
+    if other ~= own and other.x < right and left < other.x + other.width and other.y < bottom
+      and top < other.y + other.height and detect_into(col_at(list, pool, n + 1), x, y, w, h,
+      other.x, other.y, other.width, other.height, goal_x, goal_y) then
       n = n + 1
       local col = list[n]
       col.item, col.other, col.type = item, other.item, nil
