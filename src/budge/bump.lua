@@ -461,7 +461,7 @@ function World:add(item, x, y, w, h)
   list[index] = proxy
   proxy._index = index
   local record = self._world._records[proxy]
-  proxy._id, record._mark = record.id, 0
+  record._mark = 0
   self._proxies[item] = proxy
   return item
 end
@@ -1051,20 +1051,20 @@ function World:hasItem(item)
   return self._proxies[item] ~= nil
 end
 
--- Proxies in the order their items were added.
+-- Records in the order their items were added.
 local function added_before(a, b)
-  return a._id < b._id
+  return a.id < b.id
 end
 
 ---world:getItems(): a new list of the items, in the order they were added, and its length.
 ---@return any[] items, integer len
 function World:getItems()
   enter(self, "getItems")
-  local list = self._list
+  local list, records = self._list, self._world._records
   local sorted = {}
-  for i = 1, #list do sorted[i] = list[i] end
+  for i = 1, #list do sorted[i] = records[list[i]] end
   table.sort(sorted, added_before)
-  for i = 1, #sorted do sorted[i] = sorted[i].item end
+  for i = 1, #sorted do sorted[i] = sorted[i].item.item end
   return sorted, #sorted
 end
 

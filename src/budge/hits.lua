@@ -25,8 +25,6 @@ local hits = {}
 ---@field package _left number
 ---@field package _id integer the order its item was added,
 ---@field package _round integer and the phase of the move it happened in
----@field package _x? number where a "swept" move's actor was at the contact (budge.bump)
----@field package _y? number
 
 -- The responses, and the one a filter's `true` stands for.
 local RESPONSE = {slide = "slide", touch = "touch", bounce = "bounce", cross = "cross"}

@@ -465,15 +465,6 @@ end
 -- (dx, dy) enters (strictly) at a fraction of that motion in [from, to) and before
 -- `contact`, as "cross" hits at time t0 + (1 - t0) * fraction of the move; once per move,
 -- as report_crossings does.
--- Notes where the actor was at the contacts from `first` on (budge.bump's col.touch).
-local function place_hits(world, first, x, y)
-  local list = world._hits
-  for i = first, world._n_hits do
-    local hit = list[i]
-    hit._x, hit._y = x, y
-  end
-end
-
 local function report_swept_crossings(world, cross, x, y, width, height, dx, dy, from, to,
                                       contact, t0)
   local xs, ys, ws, hs = cross.x, cross.y, cross.w, cross.h
@@ -483,9 +474,7 @@ local function report_swept_crossings(world, cross, x, y, width, height, dx, dy,
       local side
       if axis == 1 then side = dx > 0 and "right" or "left"
       elseif axis == 2 then side = dy > 0 and "floor" or "ceiling" end
-      local n = world._n_hits
       add_crossing(world, cross, i, side, t0 + (1 - t0) * enter)
-      if world._n_hits > n then place_hits(world, n + 1, x + dx * enter, y + dy * enter) end
     end
   end
 end
@@ -545,7 +534,6 @@ local function advance(world, x, y, dx, dy, round, t0)
       local responses = set.response
       local time = t0 + (1 - t0) * contact
       local response = SLIDE
-      local first_hit = world._n_hits + 1
       for c = 1, set.touch_n do
         local i, kind = touch[c], normal[c]
         local chosen = filter and responses[i] or SLIDE
@@ -571,7 +559,6 @@ local function advance(world, x, y, dx, dy, round, t0)
           add_hit(world, other[i], side, cols[i], rows[i], ys[i], xs[i], ids[i], chosen, time)
         end
       end
-      place_hits(world, first_hit, new_x, new_y)
       return new_x, new_y, blocked_x, blocked_y, contact, response
     end
   end
