@@ -9,7 +9,8 @@ local here = (...):match("^(.*)%.[^%.]+$")
 local sweep = require(here .. ".sweep")
 local tilegrid = require(here .. ".tilegrid")
 
-local floor, ceil, HUGE = math.floor, math.ceil, math.huge
+local floor, ceil, min, max, abs, HUGE = math.floor, math.ceil, math.min, math.max,
+  math.abs, math.huge
 local format, error = string.format, error
 local clip_axis, segment_enter = sweep.clip_axis, sweep.segment_enter
 local measure, read = tilegrid.measure, tilegrid.read
@@ -37,6 +38,55 @@ local EMPTY, SOLID, ONEWAY = tilegrid.EMPTY, tilegrid.SOLID, tilegrid.ONEWAY
 ---@field package _is_solid? fun(id: any): boolean
 ---@field package _is_oneway? fun(id: any): boolean
 
+-- The reach tables: for each tile, the nearest line at or beyond it (toward +x, -x, +y,
+-- -y) that holds a solid tile in its row or column, as a 0-based column or row (cols or
+-- rows when there is none toward +x or +y, -1 toward -x or -y); `_down_any` counts oneway
+-- tiles too (the same table as `_down` when the layer has none). The axis scan reads
+-- the line a box stops at from them, one read per tile across the box, whatever the
+-- move's length. They take four or five numbers per tile, built at add_tiles and at
+-- each update (five passes over the grid).
+local function build_reach(tiles)
+  local kinds, cols, rows = tiles._kinds, tiles.cols, tiles.rows
+  local right, left, down, up = tiles._right or {}, tiles._left or {}, tiles._down or {},
+    tiles._up or {}
+  local has_oneway = false
+  for row = 0, rows - 1 do
+    local base = row * cols + 1
+    local next_solid = cols
+    for col = cols - 1, 0, -1 do
+      local kind = kinds[base + col]
+      if kind == SOLID then next_solid = col elseif kind == ONEWAY then has_oneway = true end
+      right[base + col] = next_solid
+    end
+    next_solid = -1
+    for col = 0, cols - 1 do
+      if kinds[base + col] == SOLID then next_solid = col end
+      left[base + col] = next_solid
+    end
+  end
+  local down_any = has_oneway and (tiles._down_any ~= tiles._down and tiles._down_any or {})
+    or down
+  for col = 1, cols do
+    local next_solid, next_any = rows, rows
+    for row = rows - 1, 0, -1 do
+      local index = row * cols + col
+      local kind = kinds[index]
+      if kind == SOLID then next_solid, next_any = row, row
+      elseif kind == ONEWAY then next_any = row end
+      down[index] = next_solid
+      if has_oneway then down_any[index] = next_any end
+    end
+    next_solid = -1
+    for row = 0, rows - 1 do
+      local index = row * cols + col
+      if kinds[index] == SOLID then next_solid = row end
+      up[index] = next_solid
+    end
+  end
+  tiles._right, tiles._left, tiles._down, tiles._up, tiles._down_any = right, left, down, up,
+    down_any
+end
+
 ---A tile layer read from the caller's grid; the options have been checked.
 ---@param source any
 ---@param tile_width number
@@ -53,6 +103,7 @@ function layer.new(source, tile_width, tile_height, opts, level)
     _width = opts.width, _is_solid = opts.is_solid, _is_oneway = opts.is_oneway,
   }
   read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds, tiles._ids)
+  build_reach(tiles)
   return tiles
 end
 
@@ -68,6 +119,7 @@ function layer.reread(tiles, level)
       tiles.cols, tiles.rows, cols, rows), level + 1)
   end
   read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds, tiles._ids)
+  build_reach(tiles)
 end
 
 ---The tile indices (0-based) whose span meets the open interval (from, to), clamped to
@@ -202,111 +254,181 @@ end
 
 -- The axis scan --------------------------------------------------------------------
 
--- True when line `j` of tiles holds a tile that stops the box (rows or columns first..last
--- across it; `oneway_ok`: oneway tiles count).
-local function line_blocks(kinds, base, cross_stride, first, last, oneway_ok)
-  for i = first, last do
-    local kind = kinds[base + i * cross_stride]
-    if kind == SOLID or (kind == ONEWAY and oneway_ok) then return true end
+-- The scan reads the line a box stops at from the reach tables (build_reach): from the
+-- first line ahead of the box's trailing edge (a face inside the box counts: the box
+-- overlaps a solid tile there, and the caller refuses to go deeper), the nearest line
+-- with a solid tile among the tiles across the box is the smallest (or, backward, the
+-- largest) of their reach values; a move down also meets the oneway tiles from the first
+-- line at or past its bottom edge. One read per tile across the box, whatever the length
+-- of the move.
+-- Speed: LuaJIT compiles a move of the world bench into one tree of traces when it
+-- enters no loop (a loop is a trace of its own, and the step from trace to trace costs
+-- more than the reads) and when few values are live at its branches: each local live
+-- at a branch, in this function and in every caller up to the game's loop, is carried
+-- into the branch's side trace, and with a dozen numbers there LuaJIT cannot compile the
+-- side trace at all ("NYI: register coalescing too complex", thousands of aborts per run
+-- of the world bench before this shape). Hence the layer's fields read where they are
+-- used rather than kept in locals, one or two tiles across read without a loop, and
+-- move.lua's axis_phase tail-calling phase_stop.
+
+-- The first line whose low face is past `at` (`strict`), or at or past it: the line
+-- index, its face checked against `at` itself (the division may round across it).
+local function ahead(origin, tile, inverse, at, strict)
+  local j = ceil((at - origin) * inverse)
+  local near = origin + j * tile
+  if near < at or (strict and near == at) then j = j + 1
+  else
+    near = origin + (j - 1) * tile
+    if near > at or (not strict and near == at) then j = j - 1 end
   end
-  return false
+  return j
 end
 
--- The scans start at the tile holding the box's trailing edge (a rounding can only move
--- that by one tile, onto or past a tile whose face is not a candidate anyway) and stop
--- at the first face beyond the leading edge's reach, or at the end of the layer. They
--- return the line, its face and whether oneway tiles counted on it.
--- Speed: the scans find the line only, in small functions, and the contacts on it are
--- listed afterwards by list_line: one loop doing both aborted its LuaJIT trace (too many
--- live values at its exits; commit e457877, aborts listed by make bench-jit). Their long
--- positional parameter lists are kept on purpose: the same values passed in the probe
--- cost nothing on LuaJIT (239 against 240 ns per move) but 4.7% on Lua 5.4 (2309 against
--- 2418 ns; `lua5.4 bench/world.lua --profile tiles --frames 300`, median of 5, 2026-12-01).
-local function scan_forward(kinds, stride, cross_stride, first, last, origin, tile, from, to,
-                            pos, edge, far, blocks_oneway)
-  for j = from, to do
-    local near = origin + j * tile
-    if near >= far then return nil end
-    if near > pos or near >= edge then -- (or: a box of size 0 touching the face)
-      local ok = blocks_oneway and near >= edge
-      if line_blocks(kinds, j * stride + 1, cross_stride, first, last, ok) then
-        return j, near, ok
-      end
-    end
+-- The last line whose high face is before `at` (`strict`), or at or before it.
+local function behind(origin, tile, inverse, at, strict)
+  local j = floor((at - origin) * inverse) - 1
+  local high = origin + (j + 1) * tile
+  if high > at or (strict and high == at) then j = j - 1
+  else
+    high = origin + (j + 2) * tile
+    if high < at or (not strict and high == at) then j = j + 1 end
   end
-  return nil
+  return j
 end
 
-local function scan_backward(kinds, stride, cross_stride, first, last, origin, tile, from,
-                             pos, edge, far, blocks_oneway)
-  for j = from, 0, -1 do
-    local high = origin + (j + 1) * tile
-    if high <= far then return nil end
-    if high < edge or high <= pos then -- (or: a box of size 0 touching the face)
-      local ok = blocks_oneway and high <= pos
-      if line_blocks(kinds, j * stride + 1, cross_stride, first, last, ok) then
-        return j, high, ok
-      end
-    end
-  end
-  return nil
-end
-
--- Lists the tiles on line `line` that stop the box into probe.cols and probe.rows
--- (1-based); returns how many.
-local function list_line(kinds, base, cross_stride, first, last, oneway_ok, line, is_x, probe)
+-- Lists the tiles on line `line` that stop the box (those whose reach is that line: the
+-- face is `face`) into probe.cols and probe.rows (1-based); returns how many. One or two
+-- tiles across are read without a loop (a loop of one or two turns costs LuaJIT side
+-- traces it could not compile, the same aborts as in nearest_face).
+local function list_line(tiles, probe, line, first, last, face)
+  local is_x = probe.is_x
+  local reach
+  if is_x then reach = probe.forward and tiles._right or tiles._left
+  elseif not probe.forward then reach = tiles._up
+  elseif probe.blocks_oneway and face >= probe.edge then reach = tiles._down_any
+  else reach = tiles._down end
+  local base, cross_stride = line + 1, tiles.cols
+  if not is_x then base, cross_stride = line * tiles.cols + 1, 1 end
   local out_cols, out_rows = probe.cols, probe.rows
   local found = 0
-  for i = first, last do
-    local kind = kinds[base + i * cross_stride]
-    if kind == SOLID or (kind == ONEWAY and oneway_ok) then
-      found = found + 1
-      if is_x then out_cols[found], out_rows[found] = line + 1, i + 1
-      else out_cols[found], out_rows[found] = i + 1, line + 1 end
+  if last - first > 1 then
+    for i = first, last do
+      if reach[base + i * cross_stride] == line then
+        found = found + 1
+        if is_x then out_cols[found], out_rows[found] = line + 1, i + 1
+        else out_cols[found], out_rows[found] = i + 1, line + 1 end
+      end
     end
+    return found
   end
-  return found
+  -- one or two tiles: without a branch (each is a side trace to compile): `missed` is 1
+  -- for a tile whose reach is not the line (reach and line are whole numbers), the second
+  -- tile is written where the first would be when the first is not on it, and for a box
+  -- one tile across the "second" is the first again, not counted
+  local missed_first = min(abs(reach[base + first * cross_stride] - line), 1)
+  local missed_last = min(abs(reach[base + last * cross_stride] - line), 1)
+  local slot = 2 - missed_first
+  if is_x then
+    out_cols[1], out_rows[1] = line + 1, first + 1
+    out_cols[slot], out_rows[slot] = line + 1, last + 1 -- (after: it may overwrite the first)
+  else
+    out_cols[1], out_rows[1] = first + 1, line + 1
+    out_cols[slot], out_rows[slot] = last + 1, line + 1
+  end
+  return 1 - missed_first + min(last - first, 1) * (1 - missed_last)
+end
+
+-- The nearest of the lines `reach` gives for the tiles first..last across (`at`: the
+-- index of the first, `cross_stride` from one to the next): the smallest (`forward`) or
+-- the largest. The first and last tile are read without a loop (min and max compile to
+-- no branch on LuaJIT); the loop runs only for a box more than two tiles across.
+local function nearest_line(reach, at, cross_stride, first, last, forward)
+  local best
+  if forward then
+    best = min(reach[at], reach[at + (last - first) * cross_stride])
+    for i = 1, last - first - 1 do best = min(best, reach[at + i * cross_stride]) end
+  else
+    best = max(reach[at], reach[at + (last - first) * cross_stride])
+    for i = 1, last - first - 1 do best = max(best, reach[at + i * cross_stride]) end
+  end
+  return best
+end
+
+-- The line (0-based) of the nearest tile face ahead on the probe's axis among the tiles
+-- first..last across, and its face; nil when the move's reach ends before it.
+local function nearest_face(tiles, probe, first, last)
+  local is_x = probe.is_x
+  local stride, cross_stride = 1, tiles.cols
+  if not is_x then stride, cross_stride = tiles.cols, 1 end
+  if probe.forward then
+    local j
+    if is_x then
+      j = ahead(tiles.x, tiles.tile_width, tiles._inverse_width, probe.pos,
+        probe.pos < probe.edge)
+    else
+      j = ahead(tiles.y, tiles.tile_height, tiles._inverse_height, probe.pos,
+        probe.pos < probe.edge)
+    end
+    if j < 0 then j = 0 elseif j >= (is_x and tiles.cols or tiles.rows) then return nil end
+    local line = nearest_line(is_x and tiles._right or tiles._down,
+      j * stride + first * cross_stride + 1, cross_stride, first, last, true)
+    if probe.blocks_oneway and tiles._down_any ~= tiles._down then
+      -- oneway tiles stop it from the first line at or below its bottom edge on
+      j = ahead(tiles.y, tiles.tile_height, tiles._inverse_height, probe.edge, false)
+      if j < 0 then j = 0 end
+      if j < tiles.rows then
+        line = min(line, nearest_line(tiles._down_any, j * stride + first * cross_stride + 1,
+          cross_stride, first, last, true))
+      end
+    end
+    if line >= (is_x and tiles.cols or tiles.rows) then return nil end
+    local face
+    if is_x then face = tiles.x + line * tiles.tile_width
+    else face = tiles.y + line * tiles.tile_height end
+    if face >= probe.reach then return nil end
+    return line, face
+  end
+  local j
+  if is_x then
+    j = behind(tiles.x, tiles.tile_width, tiles._inverse_width, probe.edge,
+      probe.pos < probe.edge)
+    if j > tiles.cols - 1 then j = tiles.cols - 1 end
+  else
+    j = behind(tiles.y, tiles.tile_height, tiles._inverse_height, probe.edge,
+      probe.pos < probe.edge)
+    if j > tiles.rows - 1 then j = tiles.rows - 1 end
+  end
+  if j < 0 then return nil end
+  local line = nearest_line(is_x and tiles._left or tiles._up,
+    j * stride + first * cross_stride + 1, cross_stride, first, last, false)
+  if line < 0 then return nil end
+  local face
+  if is_x then face = tiles.x + (line + 1) * tiles.tile_width
+  else face = tiles.y + (line + 1) * tiles.tile_height end
+  if face <= probe.reach then return nil end
+  return line, face
 end
 
 ---Nearest tile face the probe's box meets in the layer. Returns the face coordinate
 ---and how many tiles lie on it (their 1-based col and row written to probe.cols and
 ---probe.rows), or nil, 0. A face inside the box (the box overlaps a solid tile) counts
----too, so the caller can refuse to go deeper. Scans outward from the box and stops at
----the first face, so a huge move costs at most the layer's width.
+---too, so the caller can refuse to go deeper.
 ---@param tiles budge.TileLayer
 ---@param probe budge.AxisProbe
 ---@return number? face, integer count
 function layer.tile_face(tiles, probe)
-  local is_x, pos, edge = probe.is_x, probe.pos, probe.edge
-  local origin, tile, inverse, count, stride, cross_stride, first, last
-  if is_x then
-    origin, tile, inverse, count, stride, cross_stride =
-      tiles.x, tiles.tile_width, tiles._inverse_width, tiles.cols, 1, tiles.cols
+  local first, last
+  if probe.is_x then
     first, last = span(tiles.y, tiles.tile_height, tiles._inverse_height, tiles.rows,
       probe.cross, probe.cross_end)
   else
-    origin, tile, inverse, count, stride, cross_stride =
-      tiles.y, tiles.tile_height, tiles._inverse_height, tiles.rows, tiles.cols, 1
     first, last = span(tiles.x, tiles.tile_width, tiles._inverse_width, tiles.cols,
       probe.cross, probe.cross_end)
   end
   if first > last then return nil, 0 end
-  local kinds = tiles._kinds
-  local line, face, oneway_ok
-  if probe.forward then
-    local from = floor((pos - origin) * inverse)
-    if from < 0 then from = 0 end
-    line, face, oneway_ok = scan_forward(kinds, stride, cross_stride, first, last,
-      origin, tile, from, count - 1, pos, edge, probe.reach, probe.blocks_oneway)
-  else
-    local from = ceil((edge - origin) * inverse) - 1
-    if from > count - 1 then from = count - 1 end
-    line, face, oneway_ok = scan_backward(kinds, stride, cross_stride, first, last,
-      origin, tile, from, pos, edge, probe.reach, probe.blocks_oneway)
-  end
+  local line, face = nearest_face(tiles, probe, first, last)
   if line == nil then return nil, 0 end
-  return face, list_line(kinds, line * stride + 1, cross_stride, first, last, oneway_ok,
-    line, is_x, probe)
+  return face, list_line(tiles, probe, line, first, last, face)
 end
 
 return layer

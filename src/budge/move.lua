@@ -80,6 +80,77 @@ local function hash_phase(world, probe)
   end
 end
 
+-- The stop at a tile face `face` found ahead on the probe's axis, and its `count` tiles
+-- (in probe.cols and probe.rows) as hits when it is the nearest stop yet (`best`, nil
+-- for none: a nearer one drops the hits recorded from `first_hit` on); returns the
+-- nearest stop. LuaJIT shaping: the move's values are read from the probe here, not
+-- carried in locals across the layer scan (each local live at one of the scan's branches
+-- goes into its side trace; see layer.lua's nearest_face).
+local function tile_hits(world, tiles, probe, face, count, best, first_hit)
+  local pos, size, forward = probe.pos, probe.size, probe.forward
+  local stop = face
+  if forward then stop = face >= pos + size and before(face, size, pos) or pos
+  elseif face > pos then stop = pos end -- the same outcomes as sweep.stop_forward / stop_backward give
+  if best ~= nil and ((forward and stop > best) or (not forward and stop < best)) then
+    return best
+  end
+  if stop ~= best then world._n_hits = first_hit end
+  local side
+  if probe.is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
+  local id = world._records[tiles].id
+  local cols, rows = probe.cols, probe.rows
+  local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
+  -- (the first two without a loop: a loop of one or two turns aborts LuaJIT's side traces)
+  if count == 0 then return stop end
+  local col, row = cols[1], rows[1]
+  add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
+    tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
+  if count == 1 then return stop end
+  for c = 2, count do
+    col, row = cols[c], rows[c]
+    add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
+      tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
+  end
+  return stop
+end
+
+-- The rest of axis_phase, from what it wrote into the probe: the nearest stop among the
+-- layers and the hashed solids, with its contacts.
+local function phase_stop(world, probe)
+  local first_hit = world._n_hits
+  local best
+  local layers = world._layers
+  for k = 1, #layers do
+    local tiles = layers[k]
+    -- a layer removed by a filter earlier in this move is skipped (one the filter removes
+    -- now, returning true, is met this once, as a solid is)
+    if world._records[tiles] then
+      local face, count = tile_face(tiles, probe)
+      if face then best = tile_hits(world, tiles, probe, face, count, best, first_hit) end
+    end
+  end
+  if world._solid_count > 0 then
+    probe.best, probe.touched = nil, 0
+    hash_phase(world, probe)
+    local stop = probe.best
+    local forward = probe.forward
+    if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
+      if stop ~= best then best = stop; world._n_hits = first_hit end
+      local side
+      if probe.is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
+      local touch, pos = probe.touch, probe.pos
+      local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
+      for c = 1, probe.touched do
+        local record = touch[c]
+        local item = record.item
+        add_hit(world, item, side, nil, nil, item.y, item.x, record.id, SLIDE, t)
+      end
+    end
+  end
+  if best == nil then return probe.pos + probe.delta end
+  return best
+end
+
 -- Moves `actor`'s box, at `pos` on the axis and `cross` across it, by `delta` along the
 -- axis, up to the nearest stop among tiles and boxes; returns the new position on that
 -- axis and records the contacts that stop it there, at the time probe.before (px of the
@@ -98,52 +169,7 @@ local function axis_phase(world, is_x, pos, cross, size, cross_size, delta)
   probe.reach = forward and pos + size + delta or pos + delta
   probe.cross, probe.cross_end = cross, cross + cross_size
   probe.blocks_oneway = not is_x and forward
-  local side = is_x and SIDES_X[forward] or SIDES_Y[forward]
-  local first_hit = world._n_hits
-  local best
-  local layers = world._layers
-  for k = 1, #layers do
-    local tiles = layers[k]
-    -- a layer removed by a filter earlier in this move is skipped (one the filter removes
-    -- now, returning true, is met this once, as a solid is)
-    local record = world._records[tiles]
-    if record then
-      local face, count = tile_face(tiles, probe)
-      local stop = face
-      if face then
-        if forward then stop = face >= pos + size and before(face, size, pos) or pos
-        elseif face > pos then stop = pos end
-      end -- the same outcomes as sweep.stop_forward / stop_backward give
-      if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
-        if stop ~= best then best = stop; world._n_hits = first_hit end
-        local id = record.id
-        local cols, rows = probe.cols, probe.rows
-        local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
-        for c = 1, count do
-          local col, row = cols[c], rows[c]
-          add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
-            tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
-        end
-      end
-    end
-  end
-  if world._solid_count > 0 then
-    probe.best, probe.touched = nil, 0
-    hash_phase(world, probe)
-    local stop = probe.best
-    if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
-      if stop ~= best then best = stop; world._n_hits = first_hit end
-      local touch = probe.touch
-      local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
-      for c = 1, probe.touched do
-        local record = touch[c]
-        local item = record.item
-        add_hit(world, item, side, nil, nil, item.y, item.x, record.id, SLIDE, t)
-      end
-    end
-  end
-  if best == nil then return pos + delta end
-  return best
+  return phase_stop(world, probe) -- (a tail call: this frame's values leave the traces)
 end
 
 -- Records candidate i of the set as a "cross" hit at time t, entered by `side` (nil: the
@@ -439,22 +465,22 @@ end
 -- --frames 100`, median of 5, 2026-12-01).
 local function move_axis_sweep(world, actor, dx, dy, filter)
   if filter ~= nil then return move_filtered(world, actor, dx, dy, filter) end
-  local x, y = actor.x, actor.y
-  local adx = dx < 0 and -dx or dx
-  local path = adx + (dy < 0 and -dy or dy) -- x takes the first adx of the path
   local probe = world._probe
-  probe.before, probe.path = 0, path
+  -- (no local more than needed: every local here is carried into each side trace of the
+  -- phases on LuaJIT, see layer.lua's nearest_face)
+  probe.before, probe.path = 0, (dx < 0 and -dx or dx) + (dy < 0 and -dy or dy)
+  local x, y = actor.x, actor.y
   if dx ~= 0 then
     world._round = 1
     x = axis_phase(world, true, x, y, actor.width, actor.height, dx)
   end
   if dy ~= 0 then
     world._round = 2
-    probe.before = adx
+    probe.before = dx < 0 and -dx or dx -- (x takes the first |dx| of the path)
     y = axis_phase(world, false, y, x, actor.height, actor.width, dy)
   end
   if world._sensor_count > 0 then
-    sensors_crossed(world, actor, actor.x, actor.y, x, y, dx, dy, path)
+    sensors_crossed(world, actor, actor.x, actor.y, x, y, dx, dy, probe.path)
   end
   actor.x, actor.y = x, y
 end

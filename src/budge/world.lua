@@ -400,11 +400,13 @@ function World:move(actor, dx, dy, method)
   check_box(actor, "actor", 2)
   check_number(dx, "dx", 2)
   check_number(dy, "dy", 2)
-  local range, to_x, to_y = self.range, actor.x + dx, actor.y + dy
-  if to_x < -range or to_x + actor.width > range or to_y < -range
-    or to_y + actor.height > range then
-    check_span(self, to_x, actor.width, "dx", "the actor")
-    check_span(self, to_y, actor.height, "dy", "the actor")
+  do -- (LuaJIT: each local still in scope at the move is carried into its side traces)
+    local range, to_x, to_y = self.range, actor.x + dx, actor.y + dy
+    if to_x < -range or to_x + actor.width > range or to_y < -range
+      or to_y + actor.height > range then
+      check_span(self, to_x, actor.width, "dx", "the actor")
+      check_span(self, to_y, actor.height, "dy", "the actor")
+    end
   end
   local method_entry = METHOD[method == nil and "axis_sweep" or method]
   local filter = actor.filter

@@ -1,0 +1,121 @@
+-- budge.layer's axis scan (tile_face, read from the reach tables) against a brute force
+-- over every tile of the layer, and the reach tables kept up to date by world:update.
+local layer = require("budge.layer")
+local sweep = require("budge.sweep")
+local random_source = require("fixtures.random")
+
+local SOLID_ID, ONEWAY_ID = 1, 5
+local function is_oneway(id) return id == ONEWAY_ID end
+
+-- The face tile_face must find, by looking at every tile: the nearest face of a tile
+-- that stops the box, among the tiles strictly across from it, with the tiles on it in
+-- the order across. Forward: a tile's low face counts when it is past the box's trailing
+-- edge (or at it, for a box of size 0: a face inside the box counts, the box overlaps
+-- that tile) and before the move's reach; a oneway tile only for a move down, from the
+-- box's bottom edge on. Backward likewise with the high face.
+local function brute(grid, cols, rows, opts, tile_w, tile_h, p)
+  local best, list = nil, {}
+  for row = 1, rows do
+    for col = 1, cols do
+      local id = grid[row][col]
+      local kind = id == ONEWAY_ID and "oneway" or (id ~= 0 and "solid" or nil)
+      if kind then
+        local x0, y0 = opts.x + (col - 1) * tile_w, opts.y + (row - 1) * tile_h
+        local x1, y1 = opts.x + col * tile_w, opts.y + row * tile_h
+        local low, high, lo, hi
+        if p.is_x then low, high, lo, hi = x0, x1, y0, y1 else low, high, lo, hi = y0, y1, x0, x1 end
+        if lo < p.cross_end and p.cross < hi then
+          local face
+          if p.forward then
+            if (low > p.pos or low >= p.edge) and low < p.reach and (kind == "solid"
+              or (p.blocks_oneway and low >= p.edge)) then face = low end
+          elseif (high < p.edge or high <= p.pos) and high > p.reach and kind == "solid" then
+            face = high
+          end
+          if face and (best == nil or (p.forward and face < best)
+            or (not p.forward and face > best)) then
+            best, list = face, {}
+          end
+          if face and face == best then list[#list + 1] = {col, row, p.is_x and row or col} end
+        end
+      end
+    end
+  end
+  table.sort(list, function(a, b) return a[3] < b[3] end)
+  return best, list
+end
+
+local function probe_for(is_x, forward, pos, size, delta, cross, cross_size)
+  local p = sweep.new_probe()
+  p.is_x, p.forward, p.delta, p.pos, p.size, p.edge = is_x, forward, delta, pos, size, pos + size
+  p.reach = forward and pos + size + delta or pos + delta
+  p.cross, p.cross_end = cross, cross + cross_size
+  p.blocks_oneway = not is_x and forward
+  return p
+end
+
+describe("budge.layer's axis scan", function()
+  it("finds the face and the tiles on it that a brute force over every tile finds, in "
+    .. "40000 random layers and moves (dyadic and non-dyadic origins, oneway tiles, moves "
+    .. "short and long, boxes of size 0 to several tiles)", function()
+    local rng = random_source.new(20261202)
+    local found, checked = 0, 0
+    for case = 1, 40000 do
+      local cols, rows = rng(1, 12), rng(1, 12)
+      local grid = {}
+      for row = 1, rows do
+        grid[row] = {}
+        for col = 1, cols do
+          grid[row][col] = rng(1, 4) == 1 and (rng(1, 5) == 1 and ONEWAY_ID or SOLID_ID) or 0
+        end
+      end
+      local opts = {x = rng(-20, 20) / 4, y = rng(-20, 20) / 4, is_oneway = is_oneway}
+      if case % 5 == 0 then opts.x, opts.y = opts.x + 0.3, opts.y - 0.1 end
+      local tile_w, tile_h = rng(1, 5) * 4, rng(1, 5) * 4
+      if case % 7 == 0 then tile_w, tile_h = tile_w / 3, tile_h * 0.7 end
+      local tiles = layer.new(grid, tile_w, tile_h, opts, 1)
+      local is_x, forward = rng(1, 2) == 1, rng(1, 2) == 1
+      local pos, size = rng(-40, 240) / 4, rng(0, 80) / 4
+      if case % 11 == 0 then pos = (is_x and opts.x or opts.y) + rng(0, 12) * (is_x and tile_w or tile_h) end
+      local delta = (forward and 1 or -1) * rng(1, 200) / 4
+      local p = probe_for(is_x, forward, pos, size, delta, rng(-40, 240) / 4, rng(0, 80) / 4)
+      local face, count = layer.tile_face(tiles, p)
+      local want, list = brute(grid, cols, rows, opts, tile_w, tile_h, p)
+      assert.are.equal(want, face, "case " .. case)
+      assert.are.equal(#list, count, "case " .. case)
+      for i = 1, count do
+        assert.are.same({list[i][1], list[i][2]}, {p.cols[i], p.rows[i]}, "case " .. case)
+      end
+      checked = checked + 1
+      if face then found = found + 1 end
+    end
+    assert.are.equal(40000, checked)
+    assert.is_true(found > 10000 and found < 30000, "found " .. found) -- (both kinds of case)
+  end)
+
+  it("reads the grid again at world:update: a solid tile and a oneway tile stop moves "
+    .. "once added, and not once gone", function()
+    local budge = require("budge")
+    local world = budge.new_world()
+    local grid = {}
+    for row = 1, 4 do grid[row] = {0, 0, 0, 0, 0, 0, 0, 0} end
+    local handle = world:add_tiles(grid, 16, 16, {is_oneway = is_oneway})
+    local actor = world:add_actor({x = 2, y = 2, width = 12, height = 12})
+    local function move(dx, dy)
+      local x, y = world:move(actor, dx, dy)
+      return {x, y}
+    end
+    assert.are.same({98, 2}, move(96, 0))
+    grid[1][8] = SOLID_ID
+    world:update(handle)
+    assert.are.same({2, 2}, move(-96, 0))
+    assert.are.same({100, 2}, move(100, 0)) -- (the tile's face at x = 112)
+    grid[3][7] = ONEWAY_ID
+    world:update(handle)
+    assert.are.same({100, 20}, move(0, 30)) -- (onto the oneway's top at y = 32)
+    assert.are.same({100, 2}, move(0, -18)) -- (up through nothing)
+    grid[1][8], grid[3][7] = 0, 0
+    world:update(handle)
+    assert.are.same({116, 32}, move(16, 30))
+  end)
+end)
