@@ -38,53 +38,53 @@ local EMPTY, SOLID, ONEWAY = tilegrid.EMPTY, tilegrid.SOLID, tilegrid.ONEWAY
 ---@field package _is_solid? fun(id: any): boolean
 ---@field package _is_oneway? fun(id: any): boolean
 
--- The reach tables: for each tile, the nearest line at or beyond it (toward +x, -x, +y,
+-- The reach table: for each tile, the nearest line at or beyond it (toward +x, -x, +y,
 -- -y) that holds a solid tile in its row or column, as a 0-based column or row (cols or
--- rows when there is none toward +x or +y, -1 toward -x or -y); `_down_any` counts oneway
--- tiles too (the same table as `_down` when the layer has none). The axis scan reads
--- the line a box stops at from them, one read per tile across the box, whatever the
--- move's length. They take four or five numbers per tile, built at add_tiles and at
--- each update (five passes over the grid).
+-- rows when there is none toward +x or +y, -1 toward -x or -y), the four side by side
+-- at 4 * (index - 1) + RIGHT, LEFT, DOWN or UP (so that a move reads one part of memory
+-- for both of its axes); `_down_any` counts oneway tiles too, toward +y, at the tile's
+-- index (false when the layer has none). The axis scan reads the line a box stops at
+-- from them, one read per tile across the box, whatever the move's length. They take
+-- four or five numbers per tile, built at add_tiles and at each update (four passes over
+-- the grid).
+local RIGHT, LEFT, DOWN, UP = 1, 2, 3, 4
 local function build_reach(tiles)
   local kinds, cols, rows = tiles._kinds, tiles.cols, tiles.rows
-  local right, left, down, up = tiles._right or {}, tiles._left or {}, tiles._down or {},
-    tiles._up or {}
+  local reach = tiles._reach or {}
   local has_oneway = false
   for row = 0, rows - 1 do
-    local base = row * cols + 1
+    local base = row * cols
     local next_solid = cols
     for col = cols - 1, 0, -1 do
-      local kind = kinds[base + col]
+      local kind = kinds[base + col + 1]
       if kind == SOLID then next_solid = col elseif kind == ONEWAY then has_oneway = true end
-      right[base + col] = next_solid
+      reach[(base + col) * 4 + RIGHT] = next_solid
     end
     next_solid = -1
     for col = 0, cols - 1 do
-      if kinds[base + col] == SOLID then next_solid = col end
-      left[base + col] = next_solid
+      if kinds[base + col + 1] == SOLID then next_solid = col end
+      reach[(base + col) * 4 + LEFT] = next_solid
     end
   end
-  local down_any = has_oneway and (tiles._down_any ~= tiles._down and tiles._down_any or {})
-    or down
-  for col = 1, cols do
+  local down_any = has_oneway and (tiles._down_any or {}) or false
+  for col = 0, cols - 1 do
     local next_solid, next_any = rows, rows
     for row = rows - 1, 0, -1 do
       local index = row * cols + col
-      local kind = kinds[index]
+      local kind = kinds[index + 1]
       if kind == SOLID then next_solid, next_any = row, row
       elseif kind == ONEWAY then next_any = row end
-      down[index] = next_solid
-      if has_oneway then down_any[index] = next_any end
+      reach[index * 4 + DOWN] = next_solid
+      if down_any then down_any[index + 1] = next_any end
     end
     next_solid = -1
     for row = 0, rows - 1 do
       local index = row * cols + col
-      if kinds[index] == SOLID then next_solid = row end
-      up[index] = next_solid
+      if kinds[index + 1] == SOLID then next_solid = row end
+      reach[index * 4 + UP] = next_solid
     end
   end
-  tiles._right, tiles._left, tiles._down, tiles._up, tiles._down_any = right, left, down, up,
-    down_any
+  tiles._reach, tiles._down_any = reach, down_any
 end
 
 ---A tile layer read from the caller's grid; the options have been checked.
@@ -271,6 +271,11 @@ end
 -- used rather than kept in locals, one or two tiles across read without a loop, and
 -- move.lua's axis_phase tail-calling phase_stop.
 
+-- LuaJIT takes the branch-free forms below (math.min and math.max compile to no branch
+-- there); Lua 5.1-5.4 take the loops, where math.min is a call into C and a branch is
+-- cheap.
+local BRANCH_FREE = rawget(_G, "jit") ~= nil
+
 -- The first line whose low face is past `at` (`strict`), or at or past it: the line
 -- index, its face checked against `at` itself (the division may round across it).
 local function ahead(origin, tile, inverse, at, strict)
@@ -302,16 +307,18 @@ end
 -- traces it could not compile, the same aborts as in nearest_face).
 local function list_line(tiles, probe, line, first, last, face)
   local is_x = probe.is_x
-  local reach
-  if is_x then reach = probe.forward and tiles._right or tiles._left
-  elseif not probe.forward then reach = tiles._up
-  elseif probe.blocks_oneway and face >= probe.edge then reach = tiles._down_any
-  else reach = tiles._down end
-  local base, cross_stride = line + 1, tiles.cols
-  if not is_x then base, cross_stride = line * tiles.cols + 1, 1 end
+  local reach = tiles._reach
+  local base, cross_stride
+  if is_x then
+    base, cross_stride = line * 4 + (probe.forward and RIGHT or LEFT), tiles.cols * 4
+  elseif probe.forward and probe.blocks_oneway and tiles._down_any and face >= probe.edge then
+    reach, base, cross_stride = tiles._down_any, line * tiles.cols + 1, 1
+  else
+    base, cross_stride = line * tiles.cols * 4 + (probe.forward and DOWN or UP), 4
+  end
   local out_cols, out_rows = probe.cols, probe.rows
   local found = 0
-  if last - first > 1 then
+  if last - first > 1 or not BRANCH_FREE then
     for i = first, last do
       if reach[base + i * cross_stride] == line then
         found = found + 1
@@ -339,17 +346,29 @@ local function list_line(tiles, probe, line, first, last, face)
 end
 
 -- The nearest of the lines `reach` gives for the tiles first..last across (`at`: the
--- index of the first, `cross_stride` from one to the next): the smallest (`forward`) or
+-- index of the first, `step` from one to the next): the smallest (`forward`) or
 -- the largest. The first and last tile are read without a loop (min and max compile to
 -- no branch on LuaJIT); the loop runs only for a box more than two tiles across.
-local function nearest_line(reach, at, cross_stride, first, last, forward)
+local function nearest_line(reach, at, step, first, last, forward)
   local best
+  if not BRANCH_FREE then
+    best = reach[at]
+    for i = 1, last - first do
+      local line = reach[at + i * step]
+      if forward then
+        if line < best then best = line end
+      elseif line > best then
+        best = line
+      end
+    end
+    return best
+  end
   if forward then
-    best = min(reach[at], reach[at + (last - first) * cross_stride])
-    for i = 1, last - first - 1 do best = min(best, reach[at + i * cross_stride]) end
+    best = min(reach[at], reach[at + (last - first) * step])
+    for i = 1, last - first - 1 do best = min(best, reach[at + i * step]) end
   else
-    best = max(reach[at], reach[at + (last - first) * cross_stride])
-    for i = 1, last - first - 1 do best = max(best, reach[at + i * cross_stride]) end
+    best = max(reach[at], reach[at + (last - first) * step])
+    for i = 1, last - first - 1 do best = max(best, reach[at + i * step]) end
   end
   return best
 end
@@ -370,9 +389,9 @@ local function nearest_face(tiles, probe, first, last)
         probe.pos < probe.edge)
     end
     if j < 0 then j = 0 elseif j >= (is_x and tiles.cols or tiles.rows) then return nil end
-    local line = nearest_line(is_x and tiles._right or tiles._down,
-      j * stride + first * cross_stride + 1, cross_stride, first, last, true)
-    if probe.blocks_oneway and tiles._down_any ~= tiles._down then
+    local line = nearest_line(tiles._reach, (j * stride + first * cross_stride) * 4
+      + (is_x and RIGHT or DOWN), cross_stride * 4, first, last, true)
+    if probe.blocks_oneway and tiles._down_any then
       -- oneway tiles stop it from the first line at or below its bottom edge on
       j = ahead(tiles.y, tiles.tile_height, tiles._inverse_height, probe.edge, false)
       if j < 0 then j = 0 end
@@ -399,8 +418,8 @@ local function nearest_face(tiles, probe, first, last)
     if j > tiles.rows - 1 then j = tiles.rows - 1 end
   end
   if j < 0 then return nil end
-  local line = nearest_line(is_x and tiles._left or tiles._up,
-    j * stride + first * cross_stride + 1, cross_stride, first, last, false)
+  local line = nearest_line(tiles._reach, (j * stride + first * cross_stride) * 4
+    + (is_x and LEFT or UP), cross_stride * 4, first, last, false)
   if line < 0 then return nil end
   local face
   if is_x then face = tiles.x + (line + 1) * tiles.tile_width
