@@ -1,5 +1,6 @@
--- budge.layer's axis scan (tile_face, read from the reach tables) against a brute force
--- over every tile of the layer, and the reach tables kept up to date by world:update.
+-- budge.layer's axis scans (tile_face, read from the reach tables, and tile_face_scan,
+-- the line scan a world with hashed solids uses) against a brute force over every tile
+-- of the layer, and the reach tables kept up to date by world:update.
 local layer = require("budge.layer")
 local sweep = require("budge.sweep")
 local random_source = require("fixtures.random")
@@ -55,7 +56,7 @@ local function probe_for(is_x, forward, pos, size, delta, cross, cross_size)
 end
 
 describe("budge.layer's axis scan", function()
-  it("finds the face and the tiles on it that a brute force over every tile finds, in "
+  it("both find the face and the tiles on it that a brute force over every tile finds, in "
     .. "40000 random layers and moves (dyadic and non-dyadic origins, oneway tiles, moves "
     .. "short and long, boxes of size 0 to several tiles)", function()
     local rng = random_source.new(20261202)
@@ -79,12 +80,17 @@ describe("budge.layer's axis scan", function()
       if case % 11 == 0 then pos = (is_x and opts.x or opts.y) + rng(0, 12) * (is_x and tile_w or tile_h) end
       local delta = (forward and 1 or -1) * rng(1, 200) / 4
       local p = probe_for(is_x, forward, pos, size, delta, rng(-40, 240) / 4, rng(0, 80) / 4)
-      local face, count = layer.tile_face(tiles, p)
       local want, list = brute(grid, cols, rows, opts, tile_w, tile_h, p)
-      assert.are.equal(want, face, "case " .. case)
-      assert.are.equal(#list, count, "case " .. case)
-      for i = 1, count do
-        assert.are.same({list[i][1], list[i][2]}, {p.cols[i], p.rows[i]}, "case " .. case)
+      local face
+      for _, scan in ipairs({"tile_face", "tile_face_scan"}) do
+        local count
+        face, count = layer[scan](tiles, p)
+        assert.are.equal(want, face, scan .. ", case " .. case)
+        assert.are.equal(#list, count, scan .. ", case " .. case)
+        for i = 1, count do
+          assert.are.same({list[i][1], list[i][2]}, {p.cols[i], p.rows[i]},
+            scan .. ", case " .. case)
+        end
       end
       checked = checked + 1
       if face then found = found + 1 end

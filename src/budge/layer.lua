@@ -450,4 +450,111 @@ function layer.tile_face(tiles, probe)
   return face, list_line(tiles, probe, line, first, last, face)
 end
 
+-- The line scan -------------------------------------------------------------------
+
+-- True when line `j` of tiles holds a tile that stops the box (rows or columns first..last
+-- across it; `oneway_ok`: oneway tiles count).
+local function line_blocks(kinds, base, cross_stride, first, last, oneway_ok)
+  for i = first, last do
+    local kind = kinds[base + i * cross_stride]
+    if kind == SOLID or (kind == ONEWAY and oneway_ok) then return true end
+  end
+  return false
+end
+
+-- The scans start at the tile holding the box's trailing edge (a rounding can only move
+-- that by one tile, onto or past a tile whose face is not a candidate anyway) and stop
+-- at the first face beyond the leading edge's reach, or at the end of the layer. They
+-- return the line, its face and whether oneway tiles counted on it.
+-- Speed: the scans find the line only, in small functions, and the contacts on it are
+-- listed afterwards by list_line: one loop doing both aborted its LuaJIT trace (too many
+-- live values at its exits; commit e457877, aborts listed by make bench-jit). Their long
+-- positional parameter lists are kept on purpose: the same values passed in the probe
+-- cost nothing on LuaJIT (239 against 240 ns per move) but 4.7% on Lua 5.4 (2309 against
+-- 2418 ns; `lua5.4 bench/world.lua --profile tiles --frames 300`, median of 5, 2026-12-01).
+local function scan_forward(kinds, stride, cross_stride, first, last, origin, tile, from, to,
+                            pos, edge, far, blocks_oneway)
+  for j = from, to do
+    local near = origin + j * tile
+    if near >= far then return nil end
+    if near > pos or near >= edge then -- (or: a box of size 0 touching the face)
+      local ok = blocks_oneway and near >= edge
+      if line_blocks(kinds, j * stride + 1, cross_stride, first, last, ok) then
+        return j, near, ok
+      end
+    end
+  end
+  return nil
+end
+
+local function scan_backward(kinds, stride, cross_stride, first, last, origin, tile, from,
+                             pos, edge, far, blocks_oneway)
+  for j = from, 0, -1 do
+    local high = origin + (j + 1) * tile
+    if high <= far then return nil end
+    if high < edge or high <= pos then -- (or: a box of size 0 touching the face)
+      local ok = blocks_oneway and high <= pos
+      if line_blocks(kinds, j * stride + 1, cross_stride, first, last, ok) then
+        return j, high, ok
+      end
+    end
+  end
+  return nil
+end
+
+-- Lists the tiles on line `line` that stop the box into probe.cols and probe.rows
+-- (1-based); returns how many.
+local function list_kinds(kinds, base, cross_stride, first, last, oneway_ok, line, is_x, probe)
+  local out_cols, out_rows = probe.cols, probe.rows
+  local found = 0
+  for i = first, last do
+    local kind = kinds[base + i * cross_stride]
+    if kind == SOLID or (kind == ONEWAY and oneway_ok) then
+      found = found + 1
+      if is_x then out_cols[found], out_rows[found] = line + 1, i + 1
+      else out_cols[found], out_rows[found] = i + 1, line + 1 end
+    end
+  end
+  return found
+end
+
+---layer.tile_face's answer by scanning the lines of tiles outward from the box, for a
+---world with hashed solids (see move.lua's phase_stop). Scans outward from the box and
+---stops at the first face, so a huge move costs at most the layer's width.
+---@param tiles budge.TileLayer
+---@param probe budge.AxisProbe
+---@return number? face, integer count
+function layer.tile_face_scan(tiles, probe)
+  local is_x, pos, edge = probe.is_x, probe.pos, probe.edge
+  local origin, tile, inverse, count, stride, cross_stride, first, last
+  if is_x then
+    origin, tile, inverse, count, stride, cross_stride =
+      tiles.x, tiles.tile_width, tiles._inverse_width, tiles.cols, 1, tiles.cols
+    first, last = span(tiles.y, tiles.tile_height, tiles._inverse_height, tiles.rows,
+      probe.cross, probe.cross_end)
+  else
+    origin, tile, inverse, count, stride, cross_stride =
+      tiles.y, tiles.tile_height, tiles._inverse_height, tiles.rows, tiles.cols, 1
+    first, last = span(tiles.x, tiles.tile_width, tiles._inverse_width, tiles.cols,
+      probe.cross, probe.cross_end)
+  end
+  if first > last then return nil, 0 end
+  local kinds = tiles._kinds
+  local line, face, oneway_ok
+  if probe.forward then
+    local from = floor((pos - origin) * inverse)
+    if from < 0 then from = 0 end
+    line, face, oneway_ok = scan_forward(kinds, stride, cross_stride, first, last,
+      origin, tile, from, count - 1, pos, edge, probe.reach, probe.blocks_oneway)
+  else
+    local from = ceil((edge - origin) * inverse) - 1
+    if from > count - 1 then from = count - 1 end
+    line, face, oneway_ok = scan_backward(kinds, stride, cross_stride, first, last,
+      origin, tile, from, pos, edge, probe.reach, probe.blocks_oneway)
+  end
+  if line == nil then return nil, 0 end
+  return face, list_kinds(kinds, line * stride + 1, cross_stride, first, last, oneway_ok,
+    line, is_x, probe)
+end
+
 return layer
