@@ -61,6 +61,16 @@ function box.check_number(value, name, level)
   end
 end
 
+---Raises "filter must be a function or nil, got <value>" at `level` (1 = the caller of
+---the function that calls check_filter) unless `filter` is a function or nil.
+---@param filter any
+---@param level integer
+function box.check_filter(filter, level)
+  if filter ~= nil and type(filter) ~= "function" then
+    error(format("filter must be a function or nil, got %s", describe(filter)), level + 1)
+  end
+end
+
 ---Checks that `b` is a box: a table whose x, y, width and height are finite numbers,
 ---width and height >= 0. `name` names the argument in the message.
 ---@param b any

@@ -22,7 +22,7 @@ local sweep = require(here .. ".sweep")
 local entry = require(here .. ".entry")
 local world_module = require(here .. ".world")
 
-local describe, is_finite = box.describe, box.is_finite
+local describe, is_finite, check_filter = box.describe, box.is_finite, box.check_filter
 local box_enter, before = sweep.box_enter, sweep.before
 local check_span = entry.check_span
 local format, error, type, setmetatable, getmetatable = string.format, error, type,
@@ -294,11 +294,6 @@ local function check_positive(value, name, level)
   end
 end
 
-local function check_filter(filter)
-  if filter ~= nil and type(filter) ~= "function" then
-    error(format("filter must be a function or nil, got %s", describe(filter)), 3)
-  end
-end
 
 -- What a filter or a custom response may not call on the world that called it (they may
 -- project and query it).
@@ -783,7 +778,7 @@ function World:check(item, goal_x, goal_y, filter)
   enter(self, "check")
   local proxy = find_proxy(self, item)
   check_goal(self, proxy, goal_x, goal_y)
-  check_filter(filter)
+  check_filter(filter, 2)
   local x, y, n = plan_move(self, proxy, goal_x, goal_y, filter, self._check_cols,
     self._check_pool)
   return x, y, self._check_cols, n
@@ -802,7 +797,7 @@ function World:move(item, goal_x, goal_y, filter)
   enter(self, "move")
   local proxy = find_proxy(self, item)
   check_goal(self, proxy, goal_x, goal_y)
-  check_filter(filter)
+  check_filter(filter, 2)
   local x, y, n = plan_move(self, proxy, goal_x, goal_y, filter, self._move_cols,
     self._move_pool)
   if x ~= proxy.x or y ~= proxy.y then
@@ -870,7 +865,7 @@ function World:project(item, x, y, w, h, goal_x, goal_y, filter)
   check_finite(goal_y, "goalY", 3)
   check_span(self._world, goal_x, w, "goalX", "the rectangle", 3)
   check_span(self._world, goal_y, h, "goalY", "the rectangle", 3)
-  check_filter(filter)
+  check_filter(filter, 2)
   filter = filter or default_filter
   local left, top = min(x, goal_x), min(y, goal_y)
   local right, bottom = max(x, goal_x) + w, max(y, goal_y) + h
@@ -948,7 +943,7 @@ function World:queryPoint(x, y, filter)
   check_finite(y, "y", 3)
   check_span(self._world, x, 0, "x", "the point", 3)
   check_span(self._world, y, 0, "y", "the point", 3)
-  check_filter(filter)
+  check_filter(filter, 2)
   local found, count = self._world:query_point(x, y, self._found)
   return items_of(found, count, filter)
 end
@@ -964,7 +959,7 @@ end
 function World:queryRect(x, y, w, h, filter)
   enter(self, "queryRect")
   check_rect(self, x, y, w, h)
-  check_filter(filter)
+  check_filter(filter, 2)
   local found, count = self._world:query_rect(x, y, w, h, self._found)
   return items_of(found, count, filter)
 end
@@ -996,7 +991,7 @@ end
 ---@return any[] items, integer len
 function World:querySegment(x1, y1, x2, y2, filter)
   enter(self, "querySegment")
-  check_filter(filter)
+  check_filter(filter, 2)
   local found, count = segment_hits(self, x1, y1, x2, y2)
   return items_of(found, count, filter)
 end
@@ -1012,7 +1007,7 @@ end
 ---@return table[] infos, integer len
 function World:querySegmentWithCoords(x1, y1, x2, y2, filter)
   enter(self, "querySegmentWithCoords")
-  check_filter(filter)
+  check_filter(filter, 2)
   local found, count = segment_hits(self, x1, y1, x2, y2)
   local infos, n = {}, 0
   local dx, dy = x2 - x1, y2 - y1

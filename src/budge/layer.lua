@@ -303,15 +303,15 @@ end
 
 -- Lists the tiles on line `line` that stop the box (those whose reach is that line: the
 -- face is `face`) into probe.cols and probe.rows (1-based); returns how many. One or two
--- tiles across are read without a loop (a loop of one or two turns costs LuaJIT side
--- traces it could not compile, the same aborts as in nearest_face).
+-- tiles across are read without a loop on LuaJIT (a loop of one or two turns costs side
+-- traces it could not compile: see the axis scan above).
 local function list_line(tiles, probe, line, first, last, face)
   local is_x = probe.is_x
   local reach = tiles._reach
   local base, cross_stride
   if is_x then
     base, cross_stride = line * 4 + (probe.forward and RIGHT or LEFT), tiles.cols * 4
-  elseif probe.forward and probe.blocks_oneway and tiles._down_any and face >= probe.edge then
+  elseif probe.blocks_oneway and tiles._down_any and face >= probe.edge then
     reach, base, cross_stride = tiles._down_any, line * tiles.cols + 1, 1
   else
     base, cross_stride = line * tiles.cols * 4 + (probe.forward and DOWN or UP), 4
@@ -465,7 +465,7 @@ end
 -- The scans start at the tile holding the box's trailing edge (a rounding can only move
 -- that by one tile, onto or past a tile whose face is not a candidate anyway) and stop
 -- at the first face beyond the leading edge's reach, or at the end of the layer. They
--- return the line, its face and whether oneway tiles counted on it.
+-- return the line and its face; list_line (reading the reach tables) lists its tiles.
 -- Speed: the scans find the line only, in small functions, and the contacts on it are
 -- listed afterwards by list_line: one loop doing both aborted its LuaJIT trace (too many
 -- live values at its exits; commit e457877, aborts listed by make bench-jit). Their long
@@ -480,7 +480,7 @@ local function scan_forward(kinds, stride, cross_stride, first, last, origin, ti
     if near > pos or near >= edge then -- (or: a box of size 0 touching the face)
       local ok = blocks_oneway and near >= edge
       if line_blocks(kinds, j * stride + 1, cross_stride, first, last, ok) then
-        return j, near, ok
+        return j, near
       end
     end
   end
@@ -495,27 +495,11 @@ local function scan_backward(kinds, stride, cross_stride, first, last, origin, t
     if high < edge or high <= pos then -- (or: a box of size 0 touching the face)
       local ok = blocks_oneway and high <= pos
       if line_blocks(kinds, j * stride + 1, cross_stride, first, last, ok) then
-        return j, high, ok
+        return j, high
       end
     end
   end
   return nil
-end
-
--- Lists the tiles on line `line` that stop the box into probe.cols and probe.rows
--- (1-based); returns how many.
-local function list_kinds(kinds, base, cross_stride, first, last, oneway_ok, line, is_x, probe)
-  local out_cols, out_rows = probe.cols, probe.rows
-  local found = 0
-  for i = first, last do
-    local kind = kinds[base + i * cross_stride]
-    if kind == SOLID or (kind == ONEWAY and oneway_ok) then
-      found = found + 1
-      if is_x then out_cols[found], out_rows[found] = line + 1, i + 1
-      else out_cols[found], out_rows[found] = i + 1, line + 1 end
-    end
-  end
-  return found
 end
 
 ---layer.tile_face's answer by scanning the lines of tiles outward from the box, for a
@@ -540,21 +524,20 @@ function layer.tile_face_scan(tiles, probe)
   end
   if first > last then return nil, 0 end
   local kinds = tiles._kinds
-  local line, face, oneway_ok
+  local line, face
   if probe.forward then
     local from = floor((pos - origin) * inverse)
     if from < 0 then from = 0 end
-    line, face, oneway_ok = scan_forward(kinds, stride, cross_stride, first, last,
+    line, face = scan_forward(kinds, stride, cross_stride, first, last,
       origin, tile, from, count - 1, pos, edge, probe.reach, probe.blocks_oneway)
   else
     local from = ceil((edge - origin) * inverse) - 1
     if from > count - 1 then from = count - 1 end
-    line, face, oneway_ok = scan_backward(kinds, stride, cross_stride, first, last,
+    line, face = scan_backward(kinds, stride, cross_stride, first, last,
       origin, tile, from, pos, edge, probe.reach, probe.blocks_oneway)
   end
   if line == nil then return nil, 0 end
-  return face, list_kinds(kinds, line * stride + 1, cross_stride, first, last, oneway_ok,
-    line, is_x, probe)
+  return face, list_line(tiles, probe, line, first, last, face)
 end
 
 return layer

@@ -27,7 +27,7 @@ local contacts = require(here .. ".contacts")
 
 local check_box, check_wall_type, check_number = box.check_box, box.check_wall_type,
   box.check_number
-local describe, is_finite = box.describe, box.is_finite
+local describe, is_finite, check_filter = box.describe, box.is_finite, box.check_filter
 local METHOD, NAME_LIST = move.BY_NAME, move.NAME_LIST
 local format, error, type, pcall = string.format, error, type, pcall
 
@@ -476,12 +476,6 @@ function World:move_solid(solid, dx, dy)
   return n, crushed
 end
 
--- A query's last argument: a function or nil.
-local function check_filter(filter)
-  if filter ~= nil and type(filter) ~= "function" then
-    error(format("filter must be a function or nil, got %s", describe(filter)), 3)
-  end
-end
 
 -- The results of a query into `out` (and `out_t`), the filter's refusals left out; the
 -- filter runs under the callback guard.
@@ -507,7 +501,7 @@ function World:query_point(x, y, out, filter)
   check_span(self, x, 0, "x", "the point")
   check_span(self, y, 0, "y", "the point")
   out = check_out(out, "out")
-  check_filter(filter)
+  check_filter(filter, 2)
   return out, finish(self, query.area(self, x, y, 0, 0), out, filter, nil)
 end
 
@@ -529,7 +523,7 @@ function World:query_rect(x, y, width, height, out, filter)
   check_span(self, x, width, "x", "the rectangle")
   check_span(self, y, height, "y", "the rectangle")
   out = check_out(out, "out")
-  check_filter(filter)
+  check_filter(filter, 2)
   return out, finish(self, query.area(self, x, y, width, height), out, filter, nil)
 end
 
@@ -558,7 +552,7 @@ function World:query_segment(x1, y1, x2, y2, out, out_t, filter)
   check_span(self, y2, 0, "y2", "the segment")
   out = check_out(out, "out")
   out_t = check_out(out_t, "out_t")
-  check_filter(filter)
+  check_filter(filter, 2)
   local n = finish(self, query.sweep(self, x1, y1, x2, y2, 0, 0), out, filter, out_t)
   return out, n, out_t
 end
@@ -594,7 +588,7 @@ function World:query_sweep(x, y, width, height, dx, dy, out, out_t, filter)
   check_span(self, y + dy, height, "dy", "the box")
   out = check_out(out, "out")
   out_t = check_out(out_t, "out_t")
-  check_filter(filter)
+  check_filter(filter, 2)
   local n = finish(self, query.sweep(self, x, y, x + dx, y + dy, width, height), out, filter,
     out_t)
   return out, n, out_t
