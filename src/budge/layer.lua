@@ -503,7 +503,7 @@ local function scan_backward(kinds, stride, cross_stride, first, last, origin, t
 end
 
 ---layer.tile_face's answer by scanning the lines of tiles outward from the box, for a
----world with hashed solids (see move.lua's phase_stop). Scans outward from the box and
+---world with hashed solids or sensors (see move.lua's phase_stop). Scans outward from the box and
 ---stops at the first face, so a huge move costs at most the layer's width.
 ---@param tiles budge.TileLayer
 ---@param probe budge.AxisProbe

@@ -126,14 +126,21 @@ local function phase_stop(world, probe)
     -- now, returning true, is met this once, as a solid is)
     if world._records[tiles] then
       local face, count
-      -- LuaJIT shaping: with hashed solids, the line scan (its loops end traces). The
-      -- loop-free read of tile_face made make bench-jit's platformer (tiles and two
-      -- moving platforms) unable to compile the hash scan's side traces ("register
-      -- coalescing too complex", 20-26 flushes in 3000 frames at the default budget and
-      -- 0.5-0.8 ms per frame instead of 4-5 and 0.036, 2026-12-01). Both give the same
-      -- answer (spec/layer_spec.lua).
-      if solid_count > 0 then face, count = tile_face_scan(tiles, probe)
-      else face, count = tile_face(tiles, probe) end
+      -- LuaJIT shaping: the reach read (tile_face) only in a world of tiles and actors;
+      -- with hashed solids or sensors, the line scan, whose loops end traces. The reach
+      -- read has no loop, so every path through a move compiles on into the rest of the
+      -- move (the hash scan, the sensors, the game's loop) as traces of its own: in the
+      -- world bench's tile scene that is 157 ns per move instead of 263, but with
+      -- solids (make bench-jit's platformer) LuaJIT could not compile the hash scan's side
+      -- traces (20-26 flushes in 3000 frames and 0.5-0.8 ms per frame instead of 4 and
+      -- 0.036), and with sensors (bench/contacts.lua) it needed 2980 traces instead of
+      -- 2481, so that at the default budget its moves took 19400 ns per actor instead of
+      -- 8100 (2026-12-01). Both scans give the same answer (spec/layer_spec.lua).
+      if solid_count > 0 or world._sensor_count > 0 then
+        face, count = tile_face_scan(tiles, probe)
+      else
+        face, count = tile_face(tiles, probe)
+      end
       if face then best = tile_hits(world, tiles, probe, face, count, best, first_hit) end
     end
   end
