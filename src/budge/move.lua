@@ -80,42 +80,12 @@ local function hash_phase(world, probe)
   end
 end
 
--- The stop at a tile face `face` found ahead on the probe's axis, and its `count` (>= 1)
--- tiles (in probe.cols and probe.rows) as hits when it is the nearest stop yet (`best`,
--- nil for none: a nearer one drops the hits recorded from `first_hit` on); returns the
--- nearest stop. LuaJIT shaping: the move's values are read from the probe here, not
--- carried in locals across the layer scan (see layer.lua's axis scan), and the layer's
--- record is looked up again here rather than kept in a local of phase_stop (with that
--- local, 992 "register coalescing" aborts per run of the world bench's tiles and 170 ns
--- per move instead of none and 157, 2026-12-01).
-local function tile_hits(world, tiles, probe, face, count, best, first_hit)
-  local pos, size, forward = probe.pos, probe.size, probe.forward
-  local stop = face
-  if forward then stop = face >= pos + size and before(face, size, pos) or pos
-  elseif face > pos then stop = pos end -- the same outcomes as sweep.stop_forward / stop_backward give
-  if best ~= nil and ((forward and stop > best) or (not forward and stop < best)) then
-    return best
-  end
-  if stop ~= best then world._n_hits = first_hit end
-  local side
-  if probe.is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
-  local id = world._records[tiles].id
-  local cols, rows = probe.cols, probe.rows
-  local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
-  -- (the first outside the loop: a loop of one turn aborts LuaJIT's side traces)
-  local col, row = cols[1], rows[1]
-  add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
-    tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
-  for c = 2, count do
-    col, row = cols[c], rows[c]
-    add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
-      tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
-  end
-  return stop
-end
-
 -- The rest of axis_phase, from what it wrote into the probe: the nearest stop among the
--- layers and the hashed solids, with its contacts.
+-- layers and the hashed solids, with its contacts. LuaJIT shaping: the move's values are
+-- read from the probe, not carried in locals of axis_phase (see layer.lua's axis scan);
+-- the layer's record is looked up again for its id rather than kept in a local across
+-- the scan (with that local, 992 "register coalescing" aborts per run of the world
+-- bench's tiles and 170 ns per move instead of 12 and 157, 2026-12-01).
 local function phase_stop(world, probe)
   local first_hit, solid_count = world._n_hits, world._solid_count
   local best
@@ -141,7 +111,25 @@ local function phase_stop(world, probe)
       else
         face, count = tile_face(tiles, probe)
       end
-      if face then best = tile_hits(world, tiles, probe, face, count, best, first_hit) end
+      if face then -- the stop there, and its tiles as hits when it is the nearest yet
+        local pos, size, forward = probe.pos, probe.size, probe.forward
+        local stop = face -- (the outcomes sweep.stop_forward / stop_backward give)
+        if forward then stop = face >= pos + size and before(face, size, pos) or pos
+        elseif face > pos then stop = pos end
+        if best == nil or (forward and stop <= best) or (not forward and stop >= best) then
+          if stop ~= best then best = stop; world._n_hits = first_hit end
+          local side
+          if probe.is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
+          local id = world._records[tiles].id
+          local cols, rows = probe.cols, probe.rows
+          local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
+          for c = 1, count do
+            local col, row = cols[c], rows[c]
+            add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
+              tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
+          end
+        end
+      end
     end
   end
   if solid_count > 0 then
