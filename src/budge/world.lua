@@ -397,15 +397,24 @@ function World:move(actor, dx, dy, method)
   -- median of 5, 2026-12-01).
   local record = self._records[actor]
   if record == nil or record.kind ~= ACTOR then check_move(self, actor, dx, dy, method) end
-  check_box(actor, "actor", 2)
-  check_number(dx, "dx", 2)
-  check_number(dy, "dy", 2)
   do -- (LuaJIT: each local still in scope at the move is carried into its side traces)
-    local range, to_x, to_y = self.range, actor.x + dx, actor.y + dy
-    if to_x < -range or to_x + actor.width > range or to_y < -range
-      or to_y + actor.height > range then
-      check_span(self, to_x, actor.width, "dx", "the actor")
-      check_span(self, to_y, actor.height, "dy", "the actor")
+    -- check_box's and check_number's tests written out (x - x is 0 for a finite number
+    -- only); the functions run only to raise their error. Through them, 9 calls per move:
+    -- `lua5.4 bench/world.lua --way tiles --count 1000 --frames 60` took 2369 ns per move
+    -- instead of 2189 (median of 5, 2026-12-01).
+    local x, y, width, height = actor.x, actor.y, actor.width, actor.height
+    if type(x) ~= "number" or type(y) ~= "number" or type(width) ~= "number"
+      or type(height) ~= "number" or type(dx) ~= "number" or type(dy) ~= "number"
+      or x - x ~= 0 or y - y ~= 0 or width - width ~= 0 or height - height ~= 0
+      or width < 0 or height < 0 or dx - dx ~= 0 or dy - dy ~= 0 then
+      check_box(actor, "actor", 2)
+      check_number(dx, "dx", 2)
+      check_number(dy, "dy", 2)
+    end
+    local range, to_x, to_y = self.range, x + dx, y + dy
+    if to_x < -range or to_x + width > range or to_y < -range or to_y + height > range then
+      check_span(self, to_x, width, "dx", "the actor")
+      check_span(self, to_y, height, "dy", "the actor")
     end
   end
   local method_entry = METHOD[method == nil and "axis_sweep" or method]
