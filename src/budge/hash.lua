@@ -49,6 +49,7 @@ local hash = {}
 ---@field package _all budge.HashRecord[] every record, in no particular order
 ---@field package _n integer how many (#_all, kept as a field: `#` is a search on LuaJIT)
 ---@field package _big budge.HashRecord[] the records spanning more than BIG_CELLS cells
+---@field package _packed boolean cells keep a packed copy of their records' boxes
 local Hash = {}
 Hash.__index = Hash
 
@@ -62,12 +63,19 @@ local KEY_STRIDE = 2 ^ 26
 local KEY_OFFSET = 2 ^ 25 * (KEY_STRIDE + 1)
 local BIG_CELLS = 4096
 
----A new, empty hash.
+---A new, empty hash. With `packed`, each cell keeps beside its records a packed copy of
+---their boxes, as inserted, in one flat array (cell.pack: x, y, right, bottom, oneway,
+---record, six slots per record, in the cell's order), which Hash:axis_stop reads instead
+---of the records: the world's solids, whose boxes change only by a remove and an insert.
+---Speed: the scan reads one array per cell, where each record is a table of its own
+---with a hash part (about 1 KB each: a world bench scene of 8000 boxes does not fit in
+---the cache the scan reads through), and writes no stamp into the records it passes.
 ---@param cell_size number > 0, checked by the caller
+---@param packed? boolean
 ---@return budge.Hash
-function hash.new(cell_size)
+function hash.new(cell_size, packed)
   return setmetatable({cell_size = cell_size, _cells = {}, _stamp = 0, _all = {}, _n = 0,
-    _big = {}}, Hash)
+    _big = {}, _packed = packed == true}, Hash)
 end
 
 ---A fresh stamp for one scan: records visited in that scan carry it.
@@ -124,17 +132,24 @@ function Hash:insert(record, x, y, width, height)
   -- 5 fresh runs) needed 398 KB of machine code instead of 434, flushing 3
   -- times instead of 4; make bench-jit's platformer 738 KB instead of 798 (medians of 5,
   -- 2026-12-01).
-  local cells = self._cells
+  local cells, packed = self._cells, self._packed
   local columns = cx1 - cx0 + 1
+  local right, bottom, oneway = x + width, y + height, record.oneway == true
   for k = 0, columns * (cy1 - cy0 + 1) - 1 do
     local row = floor(k / columns)
     local key = (cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET
     local cell = cells[key]
     if cell == nil then
-      cell = {}
+      cell = packed and {pack = {}} or {}
       cells[key] = cell
     end
-    cell[#cell + 1] = record
+    local count = #cell + 1
+    cell[count] = record
+    if packed then
+      local pack, base = cell.pack, count * 6 - 6
+      pack[base + 1], pack[base + 2], pack[base + 3] = x, y, right
+      pack[base + 4], pack[base + 5], pack[base + 6] = bottom, oneway, record
+    end
   end
 end
 
@@ -146,13 +161,19 @@ local function unlist(list, record, field)
   record[field] = nil
 end
 
--- Takes `record` out of one cell, keeping the others' insertion order (shift, don't swap).
+-- Takes `record` out of one cell, keeping the others' insertion order (shift, don't swap),
+-- and out of the cell's packed boxes when it has them.
 local function unlist_cell(cell, record)
   local count = #cell
   for i = 1, count do
     if cell[i] == record then
       for j = i, count - 1 do cell[j] = cell[j + 1] end
       cell[count] = nil
+      local pack = cell.pack
+      if pack then
+        for j = i * 6 - 5, count * 6 - 6 do pack[j] = pack[j + 6] end
+        for j = count * 6 - 5, count * 6 do pack[j] = nil end
+      end
       return
     end
   end
@@ -379,6 +400,52 @@ local function scan_cell(cell, stamp, probe)
   end
 end
 
+-- consider for a packed box whose face on the axis is at `face` (its low face moving
+-- forward, its high one moving back): a record in several of the scanned cells is met
+-- once each time, so on a tie it is added to probe.touch only if it is not there yet
+-- (what the stamps do in scan_cell; the first meeting keeps its place).
+local function consider_packed(probe, record, face, oneway)
+  local stop
+  if probe.forward then
+    stop = stop_forward(face, probe.pos, probe.edge, probe.reach, probe.size, oneway,
+      probe.blocks_oneway)
+  else
+    stop = stop_backward(face, probe.pos, probe.edge, probe.reach, oneway, probe.blocks_oneway)
+  end
+  if stop == nil or record.removed then return end
+  local best, touch = probe.best, probe.touch
+  if best ~= nil and (probe.forward and stop > best or not probe.forward and stop < best) then
+    return
+  end
+  local touched = probe.touched
+  if stop ~= best then
+    probe.best = stop
+    touched = 0
+  else
+    for c = 1, touched do if touch[c] == record then return end end
+  end
+  touched = touched + 1
+  touch[touched] = record
+  probe.touched = touched
+end
+
+-- scan_cell over a cell's packed boxes (see hash.new). probe.face_slot and cross_slot are
+-- the slots of the face on the axis and of the low side across it (0: x, 1: y, 2: right,
+-- 3: bottom); probe.sign is 1 moving forward and -1 moving back, so that one test, on
+-- the face times the sign, keeps what stop_forward or stop_backward can stop at: a face
+-- short of the reach, ahead of the box's start (or at it, ahead of its leading edge).
+local function scan_pack(pack, count, probe)
+  for base = 0, count * 6 - 6, 6 do
+    local face = pack[base + probe.face_slot]
+    local signed = probe.sign * face
+    if signed < probe.signed_reach and (signed > probe.signed_pos or signed >= probe.signed_edge)
+      and pack[base + probe.cross_slot] < probe.cross_end
+      and probe.cross < pack[base + probe.cross_slot + 2] then
+      consider_packed(probe, pack[base + 6], face, pack[base + 5])
+    end
+  end
+end
+
 ---Runs the probe over the records (each with its box's x, y, width, height copied in,
 ---and `item` what the filter is given) in the cells the rectangle touches: where the
 ---box stops, as sweep.stop_forward/backward decide, lands in probe.best, and the records
@@ -408,10 +475,25 @@ function Hash:axis_stop(x, y, width, height, probe)
   -- 1019 on boxes, within noise (`luajit bench/world.lua --profile merged`, median of 5,
   -- 2026-12-01); kept for the traces it saves (make bench-jit). The key is the one
   -- expression insert uses, for the cell (cx0 + column, cy0 + row).
-  for k = 0, count - 1 do
-    local row = floor(k / columns)
-    local cell = cells[(cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
-    if cell then scan_cell(cell, stamp, probe) end
+  if self._packed then
+    local forward = probe.forward
+    local sign = forward and 1 or -1
+    probe.sign, probe.signed_reach = sign, sign * probe.reach
+    if forward then probe.signed_pos, probe.signed_edge = probe.pos, probe.edge
+    else probe.signed_pos, probe.signed_edge = -probe.edge, -probe.pos end
+    if probe.is_x then probe.face_slot, probe.cross_slot = forward and 1 or 3, 2
+    else probe.face_slot, probe.cross_slot = forward and 2 or 4, 1 end
+    for k = 0, count - 1 do
+      local row = floor(k / columns)
+      local cell = cells[(cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
+      if cell then scan_pack(cell.pack, #cell, probe) end
+    end
+  else
+    for k = 0, count - 1 do
+      local row = floor(k / columns)
+      local cell = cells[(cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
+      if cell then scan_cell(cell, stamp, probe) end
+    end
   end
   local big = self._big
   if big[1] then scan_cell(big, stamp, probe) end

@@ -151,7 +151,7 @@ function world.new_world(opts)
   local self = setmetatable({
     cell_size = cell_size, range = range,
     _records = {}, _next_id = 0,
-    _solids = hash.new(cell_size), _solid_count = 0, _layers = {},
+    _solids = hash.new(cell_size, true), _solid_count = 0, _layers = {},
     _bounds = solids.new_bounds(), _box_bounds = solids.new_bounds(),
     _actors = hash.new(cell_size), _actor_list = {}, _dirty = {}, _n_dirty = 0,
     _sensors = hash.new(cell_size), _sensor_list = {}, _sensor_count = 0,

@@ -1,0 +1,161 @@
+-- budge.hash's axis scan over packed cells (the world's solids) against the same scan
+-- over the records themselves (an unpacked hash given the same calls) and against a
+-- brute force over every record, after random inserts, removes and moves.
+local hash = require("budge.hash")
+local sweep = require("budge.sweep")
+local random_source = require("fixtures.random")
+
+-- Where the probe stops against one box, by sweep's own rules, or nil.
+local function stop_at(p, rec)
+  local low, high, lo, hi
+  if p.is_x then low, high, lo, hi = rec.x, rec.x + rec.width, rec.y, rec.y + rec.height
+  else low, high, lo, hi = rec.y, rec.y + rec.height, rec.x, rec.x + rec.width end
+  if not (lo < p.cross_end and p.cross < hi) then return nil end
+  if p.forward then
+    return sweep.stop_forward(low, p.pos, p.edge, p.reach, p.size, rec.oneway, p.blocks_oneway)
+  end
+  return sweep.stop_backward(high, p.pos, p.edge, p.reach, rec.oneway, p.blocks_oneway)
+end
+
+-- The nearest stop over every record, and the set of records that stop the probe there.
+local function brute(records, p)
+  local best, set = nil, {}
+  for _, rec in ipairs(records) do
+    local stop = stop_at(p, rec)
+    if stop and (best == nil or (p.forward and stop < best) or (not p.forward and stop > best)) then
+      best, set = stop, {}
+    end
+    if stop and stop == best then set[rec] = true end
+  end
+  return best, set
+end
+
+-- (a quarter of the probes start with a face of the box on a face of a record, half of
+-- those with a box of size 0: the exact contacts)
+local function new_probe(random, dyadic, records)
+  local p = sweep.new_probe()
+  local function coord(scale)
+    if dyadic then return random(-8 * scale, 8 * scale) / 8 end
+    return (random(-1000 * scale, 1000 * scale)) / 997
+  end
+  p.is_x = random(0, 1) == 1
+  local delta = coord(40)
+  if delta == 0 then delta = 1 end
+  local pos, size, cross = coord(150), random(0, 40) / (dyadic and 2 or 3), coord(150)
+  if random(0, 3) == 0 then
+    local rec = records[random(1, #records)]
+    if random(0, 1) == 0 then size = 0 end
+    local low = p.is_x and rec.x or rec.y
+    local face = random(0, 1) == 0 and low or low + (p.is_x and rec.width or rec.height)
+    pos = random(0, 1) == 0 and face or face - size
+    cross = (p.is_x and rec.y or rec.x) - random(0, 20) / (dyadic and 2 or 3)
+  end
+  p.forward, p.delta, p.pos, p.size, p.edge = delta > 0, delta, pos, size, pos + size
+  p.reach = delta > 0 and pos + size + delta or pos + delta
+  p.cross, p.cross_end = cross, cross + random(0, 40) / (dyadic and 2 or 3)
+  p.blocks_oneway = not p.is_x and delta > 0
+  p.best, p.touched = nil, 0
+  return p
+end
+
+-- The rectangle hash_phase (move.lua) scans for the probe.
+local function swept(p)
+  local low = p.forward and p.pos or p.pos + p.delta
+  local length = p.size + (p.delta < 0 and -p.delta or p.delta)
+  if p.is_x then return low, p.cross, length, p.cross_end - p.cross end
+  return p.cross, low, p.cross_end - p.cross, length
+end
+
+-- Every cell's pack holds its records' boxes, in the cell's order.
+local function check_packs(h)
+  local cells = 0
+  for _, cell in pairs(h._cells) do -- (a spec: pairs is fine here)
+    local pack = cell.pack
+    assert(pack, "a packed hash's cell has no pack")
+    assert.are.equal(#cell * 6, #pack)
+    for i, rec in ipairs(cell) do
+      local base = i * 6 - 6
+      assert.are.same({rec.x, rec.y, rec.x + rec.width, rec.y + rec.height, rec.oneway == true, rec},
+        {pack[base + 1], pack[base + 2], pack[base + 3], pack[base + 4], pack[base + 5],
+          pack[base + 6]})
+    end
+    cells = cells + 1
+  end
+  return cells
+end
+
+describe("Hash:axis_stop over packed cells", function()
+  it("stops where the records' own scan and a brute force over every record do", function()
+    local random = random_source.new(4242)
+    local compared, stopped, ties = 0, 0, 0
+    for scene = 1, 60 do
+      local dyadic = scene % 2 == 0
+      local cell_size = ({16, 32, 64, 50})[scene % 4 + 1]
+      local packed, plain = hash.new(cell_size, true), hash.new(cell_size)
+      local records, twins = {}, {}
+      local function add()
+        local rec = {
+          x = random(-1200, 1200) / (dyadic and 8 or 7),
+          y = random(-1200, 1200) / (dyadic and 8 or 7),
+          width = random(0, random(0, 9) == 0 and 4000 or 300) / (dyadic and 4 or 3),
+          height = random(0, random(0, 9) == 0 and 4000 or 300) / (dyadic and 4 or 3),
+          oneway = random(0, 4) == 0,
+        }
+        local twin = {x = rec.x, y = rec.y, width = rec.width, height = rec.height,
+          oneway = rec.oneway}
+        packed:insert(rec, rec.x, rec.y, rec.width, rec.height)
+        plain:insert(twin, twin.x, twin.y, twin.width, twin.height)
+        records[#records + 1], twins[rec] = rec, twin
+      end
+      for _ = 1, random(1, 60) do add() end
+      for _ = 1, 200 do
+        local action = random(1, 10)
+        if action == 1 and #records > 1 then -- remove one
+          local i = random(1, #records)
+          local rec = records[i]
+          packed:remove(rec)
+          plain:remove(twins[rec])
+          table.remove(records, i)
+        elseif action == 2 then
+          add()
+        elseif action == 3 then -- move one, as the world moves a solid: out and in again
+          local rec = records[random(1, #records)]
+          local twin = twins[rec]
+          packed:remove(rec)
+          plain:remove(twin)
+          rec.x = rec.x + random(-100, 100) / (dyadic and 4 or 3)
+          rec.y = rec.y + random(-100, 100) / (dyadic and 4 or 3)
+          twin.x, twin.y = rec.x, rec.y
+          packed:insert(rec, rec.x, rec.y, rec.width, rec.height)
+          plain:insert(twin, twin.x, twin.y, twin.width, twin.height)
+        else
+          local p, q = new_probe(random, dyadic, records), sweep.new_probe()
+          for k, v in pairs(p) do if type(v) ~= "table" then q[k] = v end end
+          local x, y, w, h = swept(p)
+          packed:axis_stop(x, y, w, h, p)
+          plain:axis_stop(x, y, w, h, q)
+          local best, set = brute(records, p)
+          assert.are.equal(best, p.best)
+          assert.are.equal(q.best, p.best)
+          assert.are.equal(q.touched, p.touched)
+          local count = 0
+          for c = 1, p.touched do
+            assert.are.equal(twins[p.touch[c]], q.touch[c]) -- the same order
+            assert.is_true(set[p.touch[c]] == true)
+            count = count + 1
+          end
+          for _ in pairs(set) do count = count - 1 end
+          assert.are.equal(0, count) -- each stopping record once
+          compared = compared + 1
+          if best then stopped = stopped + 1 end
+          if p.touched > 1 then ties = ties + 1 end
+        end
+      end
+      assert.is_true(check_packs(packed) > 0)
+    end
+    -- the cases are not vacuous: many stop, some on several records at once
+    assert.is_true(compared > 8000, compared)
+    assert.is_true(stopped > compared / 10, stopped)
+    assert.is_true(ties > 50, ties)
+  end)
+end)
