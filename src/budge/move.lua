@@ -462,6 +462,27 @@ local function move_filtered(world, actor, dx, dy, filter)
   actor.x, actor.y = x, y
 end
 
+-- LuaJIT shaping: a move with a filter is left to the interpreter (move_filtered,
+-- run_phase, filtered_phase; what they call still compiles its own loops, and a move with
+-- no filter is compiled as before). Compiled, each answer a filter can give and each
+-- count of candidates is a path of its own through the rest of the move and into the
+-- game's loop: the example platformer (21 actors with filters, queries, moving solids)
+-- made LuaJIT compile 900-1300 traces and 2-3 MB of machine code, more than its default
+-- budget, which it then flushed about 52 times in 5000 frames. `luajit bench/game.lua
+-- --frames 5000 --runs 3`, 2026-12-01, before -> this and query.lua's: default budget
+-- 433-448 -> 38 us per frame and 51-53 -> 0 flushes; raised budget 97-174 -> 39-42; JIT
+-- off 55 (this alone: 182-198 us and 29-33 flushes; query.lua's alone: 180-209 and
+-- 13-16). bench/contacts.lua's moves (100 bullets with a filter): default budget
+-- 8040-8070 -> 4030-4903 ns per actor, large budget 1330-1374 -> 1262-1326.
+do
+  local jit = rawget(_G, "jit")
+  if jit and jit.off then
+    jit.off(move_filtered)
+    jit.off(run_phase)
+    jit.off(filtered_phase)
+  end
+end
+
 -- Speed: with no filter, the two phases are called straight from here and the contacts'
 -- times written only when there are contacts: through run_phase, the world bench's tile
 -- moves took 2540 ns instead of 2237 on Lua 5.4 (`lua5.4 bench/world.lua --profile tiles

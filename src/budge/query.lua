@@ -174,4 +174,17 @@ function query.abandon(world)
   for i = #found, 1, -1 do found[i] = nil end
 end
 
+-- LuaJIT shaping: the queries are left to the interpreter (what they call still compiles
+-- its own loops). Compiled, table.sort ends each trace and every query's continuation
+-- after it, into the game's own code, is compiled again for each path through it: the
+-- figures are in move.lua, where the filtered moves are left to the interpreter too.
+do
+  local jit = rawget(_G, "jit")
+  if jit and jit.off then
+    jit.off(query.area)
+    jit.off(query.sweep)
+    jit.off(query.finish)
+  end
+end
+
 return query

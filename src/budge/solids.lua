@@ -262,7 +262,7 @@ function solids.gather(world, x, y, width, height)
       n = set.n
     end
   end
-  if world._sensor_count > 0 then
+  if world._sensor_count > 0 and world._sensors:occupied(x, y, width, height) then
     cross_sensors(world, found, world._sensors:collect(x, y, width, height, found, 0))
   end
   if filter ~= nil and #world._actor_list > 1 then
@@ -324,7 +324,7 @@ function solids.gather_all(world, x, y, width, height, with_actors)
       n = set.n
     end
   end
-  if world._sensor_count > 0 then
+  if world._sensor_count > 0 and world._sensors:occupied(x, y, width, height) then
     n = append_records(found, world._sensors:collect(x, y, width, height, found, 0), set, n,
       nil)
   end
