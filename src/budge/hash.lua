@@ -483,10 +483,32 @@ function Hash:axis_stop(x, y, width, height, probe)
     else probe.signed_pos, probe.signed_edge = -probe.edge, -probe.pos end
     if probe.is_x then probe.face_slot, probe.cross_slot = forward and 1 or 3, 2
     else probe.face_slot, probe.cross_slot = forward and 2 or 4, 1 end
-    for k = 0, count - 1 do
-      local row = floor(k / columns)
-      local cell = cells[(cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
+    if columns <= 2 and count <= columns * 2 then
+      -- within 2x2 cells (most moves): the cells looked up without a loop, so that a move
+      -- among empty cells runs no loop at all (LuaJIT shaping: each loop's exit is a side
+      -- trace for each way into it)
+      local key = cx0 + cy0 * KEY_STRIDE + KEY_OFFSET
+      local cell = cells[key]
       if cell then scan_pack(cell.pack, #cell, probe) end
+      if columns == 2 then
+        cell = cells[key + 1]
+        if cell then scan_pack(cell.pack, #cell, probe) end
+      end
+      if count > columns then
+        key = key + KEY_STRIDE
+        cell = cells[key]
+        if cell then scan_pack(cell.pack, #cell, probe) end
+        if columns == 2 then
+          cell = cells[key + 1]
+          if cell then scan_pack(cell.pack, #cell, probe) end
+        end
+      end
+    else
+      for k = 0, count - 1 do
+        local row = floor(k / columns)
+        local cell = cells[(cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
+        if cell then scan_pack(cell.pack, #cell, probe) end
+      end
     end
   else
     for k = 0, count - 1 do
