@@ -62,6 +62,8 @@ Hash.__index = Hash
 local KEY_STRIDE = 2 ^ 26
 local KEY_OFFSET = 2 ^ 25 * (KEY_STRIDE + 1)
 local BIG_CELLS = 4096
+-- Hash:axis_stop scans every record of a hash of at most this many instead of its cells.
+local SMALL = 8
 
 ---A new, empty hash. With `packed`, each cell keeps beside its records a packed copy of
 ---their boxes, as inserted, in one flat array (cell.pack: x, y, right, bottom, oneway,
@@ -466,7 +468,9 @@ function Hash:axis_stop(x, y, width, height, probe)
   local cells = self._cells
   local columns = cx1 - cx0 + 1
   local count = columns * (cy1 - cy0 + 1)
-  if count > self._n then -- fewer records than cells: scan them all (bounded work)
+  -- fewer records than cells, or only a few records: scan them all (bounded work; and
+  -- LuaJIT shaping: a world of a few moving platforms takes one path, not two)
+  if count > self._n or self._n <= SMALL then
     scan_cell(self._all, stamp, probe)
     return
   end
