@@ -4,7 +4,10 @@
 -- cell (cx, cy) with floor(x / size) <= cx <= floor((x + width) / size) and likewise on
 -- y, exactly once each, and its _cx0.._cy1 fields name that range. Inside a cell records
 -- keep insertion order. Scans visit each record once by stamping it with a number from
--- the hash's own counter, so two hashes (two worlds) never disturb each other.
+-- the hash's own counter, so two hashes (two worlds) never disturb each other. The axis
+-- scan of a packed hash (the world's solids: see hash.new) reads each cell's packed copy
+-- of its records' boxes instead and stamps nothing: a record met in two cells is added to
+-- the probe's touch list once, checked on a tie.
 --
 -- The hash stores what it is given: it reads and writes only the fields declared in
 -- budge.HashRecord. Cells are never freed: a world whose boxes stay in one area stops
@@ -44,7 +47,8 @@ local hash = {}
 
 ---@class budge.Hash
 ---@field cell_size number side of a cell
----@field package _cells table<number, budge.HashRecord[]> cell key -> records, in insertion order
+---@field package _cells table<number, budge.HashRecord[]> cell key -> records, in insertion
+---order (with `pack`, their boxes packed, in a packed hash)
 ---@field package _stamp integer the counter scans take their stamps from
 ---@field package _all budge.HashRecord[] every record, in no particular order
 ---@field package _n integer how many (#_all, kept as a field: `#` is a search on LuaJIT)

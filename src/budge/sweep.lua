@@ -78,13 +78,20 @@ end
 ---@field touched integer output: how many of touch are valid
 ---@field cols integer[] output of layer.tile_face: the tiles on the face found
 ---@field rows integer[]
+---@field sign number Hash:axis_stop's scratch over packed cells: 1 forward, -1 back
+---@field signed_reach number reach times sign
+---@field signed_pos number the low end of the faces that can stop the box, times sign
+---@field signed_edge number where a face stops it from ahead, times sign
+---@field face_slot integer the slot of the face on the axis in a packed cell (1-4)
+---@field cross_slot integer the slot of the low side across the axis (1 or 2)
 
 ---A new, empty axis probe.
 ---@return budge.AxisProbe
 function sweep.new_probe()
   return {is_x = true, forward = true, pos = 0, size = 0, edge = 0, reach = 0, cross = 0,
     cross_end = 0, blocks_oneway = false, before = 0, path = 1, touch = {}, touched = 0,
-    cols = {}, rows = {}}
+    cols = {}, rows = {}, sign = 1, signed_reach = 0, signed_pos = 0, signed_edge = 0,
+    face_slot = 1, cross_slot = 2}
 end
 
 ---One axis of a slab clip (Liang-Barsky): narrows [enter, leave], the fractions of the
