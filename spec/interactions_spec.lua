@@ -776,3 +776,48 @@ describe("garbage", function()
     assert.equal(0, bytes)
   end)
 end)
+
+describe("what the packed solid cells and the sensor pre-check must not change", function()
+  it("a solid's new wall_type (world:update) is what the next move meets", function()
+    for _, count in ipairs({1, 20}) do -- (a hash of a few solids is scanned whole)
+      local world = budge.new_world({cell_size = 16})
+      for i = 1, count - 1 do world:add_solid(box(1000 + i * 40, 1000, 8, 8)) end
+      local ledge = world:add_solid(box(0, 20, 32, 4))
+      local actor = world:add_actor(box(4, 0, 8, 8))
+      local ys = {}
+      local _, y = world:move(actor, 0, 30) -- a wall: stops on it
+      ys[1] = y
+      ledge.wall_type = "oneway"
+      world:update(ledge)
+      actor.y = 24 -- under it now: up through a oneway, down onto it
+      world:update(actor)
+      _, y = world:move(actor, 0, -30)
+      ys[2] = y
+      _, y = world:move(actor, 0, 30)
+      ys[3] = y
+      ledge.wall_type = nil
+      world:update(ledge)
+      actor.y = 30
+      world:update(actor)
+      _, y = world:move(actor, 0, -30)
+      ys[4] = y
+      assert.are.same({12, -6, 12, 24}, ys)
+    end
+  end)
+
+  it("a sensor more than 4096 cells wide is crossed by every kind of move", function()
+    for _, method in ipairs({"axis_sweep", "swept", "wall_type"}) do
+      for _, filtered in ipairs({false, true}) do
+        local world = budge.new_world({cell_size = 16})
+        local field = world:add_sensor(box(-2000, -2000, 4000, 4000))
+        field.name = "field"
+        local actor = world:add_actor(box(100, 100, 8, 8))
+        if filtered then actor.filter = always("slide") end
+        local _, _, n, hits = world:move(actor, 3, 0, method)
+        assert.are.equal(1, n)
+        assert.are.equal(field, hits[1].other)
+        assert.are.equal("cross", hits[1].response)
+      end
+    end
+  end)
+end)

@@ -210,7 +210,9 @@ end
 ---@param height number
 function Hash:moved(record, x, y, width, height)
   local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
-  if cx0 ~= record._cx0 or cy0 ~= record._cy0 or cx1 ~= record._cx1 or cy1 ~= record._cy1 then
+  -- (a packed hash's cells hold a copy of the box: it is inserted again whatever moved)
+  if cx0 ~= record._cx0 or cy0 ~= record._cy0 or cx1 ~= record._cx1 or cy1 ~= record._cy1
+    or self._packed then
     self:remove(record)
     self:insert(record, x, y, width, height)
   end
@@ -406,20 +408,25 @@ local function scan_cell(cell, stamp, probe)
   end
 end
 
--- consider for a packed box whose face on the axis is at `face` (its low face moving
--- forward, its high one moving back): a record in several of the scanned cells is met
--- once each time, so on a tie it is added to probe.touch only if it is not there yet
--- (what the stamps do in scan_cell; the first meeting keeps its place).
-local function consider_packed(probe, record, face, oneway)
+-- consider for the packed box at `base` of a pack, in the cell (cx, cy), whose face on
+-- the axis is at `face` (its low face moving forward, its high one moving back). A record
+-- in several of the scanned cells is met in each: a meeting after the first can only tie
+-- (same box, same stop), and on a tie it counts only in the record's first cell in the
+-- scan's order, (max(its first column, the scan's), max(its first row, the scan's)), so
+-- that the first meeting keeps its place, as the stamps do in scan_cell, at a constant
+-- cost (a search of the touch list would cost its length at every tie).
+local function consider_packed(probe, pack, base, face, cx, cy)
   local stop
+  local oneway = pack[base + 5]
   if probe.forward then
     stop = stop_forward(face, probe.pos, probe.edge, probe.reach, probe.size, oneway,
       probe.blocks_oneway)
   else
     stop = stop_backward(face, probe.pos, probe.edge, probe.reach, oneway, probe.blocks_oneway)
   end
+  local record = pack[base + 6]
   if stop == nil or record.removed then return end
-  local best, touch = probe.best, probe.touch
+  local best = probe.best
   if best ~= nil and (probe.forward and stop > best or not probe.forward and stop < best) then
     return
   end
@@ -428,26 +435,31 @@ local function consider_packed(probe, record, face, oneway)
     probe.best = stop
     touched = 0
   else
-    for c = 1, touched do if touch[c] == record then return end end
+    local size = probe.cell_size
+    local first_cx, first_cy = floor(pack[base + 1] / size), floor(pack[base + 2] / size)
+    if first_cx < probe.scan_cx0 then first_cx = probe.scan_cx0 end
+    if first_cy < probe.scan_cy0 then first_cy = probe.scan_cy0 end
+    if cx ~= first_cx or cy ~= first_cy then return end -- met in an earlier cell
   end
   touched = touched + 1
-  touch[touched] = record
+  probe.touch[touched] = record
   probe.touched = touched
 end
 
--- scan_cell over a cell's packed boxes (see hash.new). probe.face_slot and cross_slot are
--- the slots of the face on the axis and of the low side across it (0: x, 1: y, 2: right,
--- 3: bottom); probe.sign is 1 moving forward and -1 moving back, so that one test, on
--- the face times the sign, keeps what stop_forward or stop_backward can stop at: a face
--- short of the reach, ahead of the box's start (or at it, ahead of its leading edge).
-local function scan_pack(pack, count, probe)
+-- scan_cell over the packed boxes of the cell (cx, cy) (see hash.new). probe.face_slot
+-- and cross_slot are the slots of the face on the axis and of the low side across it (1:
+-- x, 2: y, 3: right, 4: bottom); probe.sign is 1 moving forward and -1 moving back, so
+-- that one test, on the face times the sign, keeps what stop_forward or stop_backward can
+-- stop at: a face short of the reach, ahead of the box's start (or at it, ahead of its
+-- leading edge).
+local function scan_pack(pack, count, probe, cx, cy)
   for base = 0, count * 6 - 6, 6 do
     local face = pack[base + probe.face_slot]
     local signed = probe.sign * face
     if signed < probe.signed_reach and (signed > probe.signed_pos or signed >= probe.signed_edge)
       and pack[base + probe.cross_slot] < probe.cross_end
       and probe.cross < pack[base + probe.cross_slot + 2] then
-      consider_packed(probe, pack[base + 6], face, pack[base + 5])
+      consider_packed(probe, pack, base, face, cx, cy)
     end
   end
 end
@@ -491,31 +503,33 @@ function Hash:axis_stop(x, y, width, height, probe)
     else probe.signed_pos, probe.signed_edge = -probe.edge, -probe.pos end
     if probe.is_x then probe.face_slot, probe.cross_slot = forward and 1 or 3, 2
     else probe.face_slot, probe.cross_slot = forward and 2 or 4, 1 end
+    probe.scan_cx0, probe.scan_cy0, probe.cell_size = cx0, cy0, size
     if columns <= 2 and count <= columns * 2 then
       -- within 2x2 cells (most moves): the cells looked up without a loop, so that a move
       -- among empty cells runs no loop at all (LuaJIT shaping: each loop's exit is a side
       -- trace for each way into it)
       local key = cx0 + cy0 * KEY_STRIDE + KEY_OFFSET
       local cell = cells[key]
-      if cell then scan_pack(cell.pack, #cell, probe) end
+      if cell then scan_pack(cell.pack, #cell, probe, cx0, cy0) end
       if columns == 2 then
         cell = cells[key + 1]
-        if cell then scan_pack(cell.pack, #cell, probe) end
+        if cell then scan_pack(cell.pack, #cell, probe, cx1, cy0) end
       end
       if count > columns then
         key = key + KEY_STRIDE
         cell = cells[key]
-        if cell then scan_pack(cell.pack, #cell, probe) end
+        if cell then scan_pack(cell.pack, #cell, probe, cx0, cy1) end
         if columns == 2 then
           cell = cells[key + 1]
-          if cell then scan_pack(cell.pack, #cell, probe) end
+          if cell then scan_pack(cell.pack, #cell, probe, cx1, cy1) end
         end
       end
     else
       for k = 0, count - 1 do
         local row = floor(k / columns)
-        local cell = cells[(cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
-        if cell then scan_pack(cell.pack, #cell, probe) end
+        local column = k - row * columns
+        local cell = cells[(cx0 + column) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
+        if cell then scan_pack(cell.pack, #cell, probe, cx0 + column, cy0 + row) end
       end
     end
   else

@@ -463,8 +463,12 @@ local function move_filtered(world, actor, dx, dy, filter)
 end
 
 -- LuaJIT shaping: a move with a filter is left to the interpreter (move_filtered,
--- run_phase, filtered_phase; what they call still compiles its own loops, and a move with
--- no filter is compiled as before). Compiled, each answer a filter can give and each
+-- run_phase, filtered_phase, so also a push of an actor with a filter by a moving solid;
+-- what they call still compiles its own loops, and a move with no filter is compiled as
+-- before). A trace that runs into such a move cannot go on through it: LuaJIT aborts it
+-- ("JIT compilation disabled for function") and after a few tries stops trying where
+-- that trace starts (luajit -jv says "blacklisted"); the code before and after the move
+-- still compiles from its own loops. Compiled, each answer a filter can give and each
 -- count of candidates is a path of its own through the rest of the move and into the
 -- game's loop: the example platformer (21 actors with filters, queries, moving solids)
 -- made LuaJIT compile 900-1300 traces and 2-3 MB of machine code, more than its default
