@@ -504,33 +504,11 @@ function Hash:axis_stop(x, y, width, height, probe)
     if probe.is_x then probe.face_slot, probe.cross_slot = forward and 1 or 3, 2
     else probe.face_slot, probe.cross_slot = forward and 2 or 4, 1 end
     probe.scan_cx0, probe.scan_cy0, probe.cell_size = cx0, cy0, size
-    if columns <= 2 and count <= columns * 2 then
-      -- within 2x2 cells (most moves): the cells looked up without a loop, so that a move
-      -- among empty cells runs no loop at all (LuaJIT shaping: each loop's exit is a side
-      -- trace for each way into it)
-      local key = cx0 + cy0 * KEY_STRIDE + KEY_OFFSET
-      local cell = cells[key]
-      if cell then scan_pack(cell.pack, #cell, probe, cx0, cy0) end
-      if columns == 2 then
-        cell = cells[key + 1]
-        if cell then scan_pack(cell.pack, #cell, probe, cx1, cy0) end
-      end
-      if count > columns then
-        key = key + KEY_STRIDE
-        cell = cells[key]
-        if cell then scan_pack(cell.pack, #cell, probe, cx0, cy1) end
-        if columns == 2 then
-          cell = cells[key + 1]
-          if cell then scan_pack(cell.pack, #cell, probe, cx1, cy1) end
-        end
-      end
-    else
-      for k = 0, count - 1 do
-        local row = floor(k / columns)
-        local column = k - row * columns
-        local cell = cells[(cx0 + column) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
-        if cell then scan_pack(cell.pack, #cell, probe, cx0 + column, cy0 + row) end
-      end
+    for k = 0, count - 1 do
+      local row = floor(k / columns)
+      local column = k - row * columns
+      local cell = cells[(cx0 + column) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
+      if cell then scan_pack(cell.pack, #cell, probe, cx0 + column, cy0 + row) end
     end
   else
     for k = 0, count - 1 do
