@@ -365,6 +365,25 @@ function Hash:collect_overlapping(x, y, width, height, out, n)
   return n
 end
 
+-- Where the probe's box stops against a face (a low face moving forward, a high one moving
+-- back), as sweep.stop_forward/backward decide, when that is no worse than the best stop
+-- so far; else nil.
+local function stop_at(probe, face, oneway)
+  local stop
+  if probe.forward then
+    stop = stop_forward(face, probe.pos, probe.edge, probe.reach, probe.size, oneway,
+      probe.blocks_oneway)
+  else
+    stop = stop_backward(face, probe.pos, probe.edge, probe.reach, oneway, probe.blocks_oneway)
+  end
+  if stop == nil then return nil end
+  local best = probe.best
+  if best ~= nil and (probe.forward and stop > best or not probe.forward and stop < best) then
+    return nil
+  end
+  return stop
+end
+
 -- One record that spans the probe's path across: where it stops the probe, if it does,
 -- and whether that is the best stop so far.
 -- LuaJIT shaping: probe fields are read where they are used, not hoisted into locals:
@@ -372,21 +391,10 @@ end
 -- ("register coalescing too complex"); moves near hashed solids went 405 -> 270 ns
 -- (commit bc30993, make bench-world).
 local function consider(probe, record, low, length)
-  local stop
-  if probe.forward then
-    stop = stop_forward(low, probe.pos, probe.edge, probe.reach, probe.size, record.oneway,
-      probe.blocks_oneway)
-  else
-    stop = stop_backward(low + length, probe.pos, probe.edge, probe.reach, record.oneway,
-      probe.blocks_oneway)
-  end
+  local stop = stop_at(probe, probe.forward and low or low + length, record.oneway)
   if stop == nil or record.removed then return end
-  local best = probe.best
-  if best ~= nil and (probe.forward and stop > best or not probe.forward and stop < best) then
-    return
-  end
   local touched = probe.touched
-  if stop ~= best then probe.best = stop; touched = 0 end
+  if stop ~= probe.best then probe.best = stop; touched = 0 end
   touched = touched + 1
   probe.touch[touched] = record
   probe.touched = touched
@@ -416,22 +424,11 @@ end
 -- that the first meeting keeps its place, as the stamps do in scan_cell, at a constant
 -- cost (a search of the touch list would cost its length at every tie).
 local function consider_packed(probe, pack, base, face, cx, cy)
-  local stop
-  local oneway = pack[base + 5]
-  if probe.forward then
-    stop = stop_forward(face, probe.pos, probe.edge, probe.reach, probe.size, oneway,
-      probe.blocks_oneway)
-  else
-    stop = stop_backward(face, probe.pos, probe.edge, probe.reach, oneway, probe.blocks_oneway)
-  end
+  local stop = stop_at(probe, face, pack[base + 5])
   local record = pack[base + 6]
   if stop == nil or record.removed then return end
-  local best = probe.best
-  if best ~= nil and (probe.forward and stop > best or not probe.forward and stop < best) then
-    return
-  end
   local touched = probe.touched
-  if stop ~= best then
+  if stop ~= probe.best then
     probe.best = stop
     touched = 0
   else
