@@ -105,7 +105,9 @@ local function phase_stop(world, probe)
       -- traces (20-26 flushes in 3000 frames and 0.5-0.8 ms per frame instead of 4 and
       -- 0.036), and with sensors (bench/contacts.lua) it needed 2980 traces instead of
       -- 2481, so that at the default budget its moves took 19400 ns per actor instead of
-      -- 8100 (2026-12-01). Both scans give the same answer (spec/layer_spec.lua).
+      -- 8100 (2026-12-01); with sensors_crossed left to the interpreter, 1611-1811 ns
+      -- instead of 1213-1222 with a budget that never runs out. Both scans give the same
+      -- answer (spec/layer_spec.lua).
       if solid_count > 0 or world._sensor_count > 0 then
         face, count = tile_face_scan(tiles, probe)
       else
