@@ -389,12 +389,26 @@ end
 -- LuaJIT shaping: probe fields are read where they are used, not hoisted into locals:
 -- fewer values live across the loop's exits keeps LuaJIT from aborting the trace
 -- ("register coalescing too complex"); moves near hashed solids went 405 -> 270 ns
--- (commit bc30993, make bench-world).
+-- (commit bc30993, make bench-world). stop_at's work written out: the scan over records
+-- is the one Lua 5.1-5.4 use (world.lua), and there the call per candidate made moves
+-- among boxes 3.4% slower (`lua5.4 bench/world.lua --way boxes --count 1000 --frames 60`,
+-- 5 fresh runs, 2026-12-01: 4345 ns against 4200).
 local function consider(probe, record, low, length)
-  local stop = stop_at(probe, probe.forward and low or low + length, record.oneway)
+  local stop
+  if probe.forward then
+    stop = stop_forward(low, probe.pos, probe.edge, probe.reach, probe.size, record.oneway,
+      probe.blocks_oneway)
+  else
+    stop = stop_backward(low + length, probe.pos, probe.edge, probe.reach, record.oneway,
+      probe.blocks_oneway)
+  end
   if stop == nil or record.removed then return end
+  local best = probe.best
+  if best ~= nil and (probe.forward and stop > best or not probe.forward and stop < best) then
+    return
+  end
   local touched = probe.touched
-  if stop ~= probe.best then probe.best = stop; touched = 0 end
+  if stop ~= best then probe.best = stop; touched = 0 end
   touched = touched + 1
   probe.touch[touched] = record
   probe.touched = touched
