@@ -5,7 +5,7 @@
 -- y, exactly once each, and its _cx0.._cy1 fields name that range. Inside a cell records
 -- keep insertion order. Scans visit each record once by stamping it with a number from
 -- the hash's own counter, so two hashes (two worlds) never disturb each other. The axis
--- scan of a packed hash (the world's solids: see hash.new) reads each cell's packed copy
+-- scan of a packed hash (the world's solids on LuaJIT: see hash.new) reads each cell's packed copy
 -- of its records' boxes instead and stamps nothing: a record met in two cells is added to
 -- the probe's touch list once, checked on a tie.
 --
@@ -72,7 +72,8 @@ local SMALL = 8
 ---A new, empty hash. With `packed`, each cell keeps beside its records a packed copy of
 ---their boxes, as inserted, in one flat array (cell.pack: x, y, right, bottom, oneway,
 ---record, six slots per record, in the cell's order), which Hash:axis_stop reads instead
----of the records: the world's solids, whose boxes change only by a remove and an insert.
+---of the records: the world's solids on LuaJIT (world.lua), whose boxes change only by a
+---remove and an insert.
 ---Speed: the scan reads one array per cell, where each record is a table of its own
 ---with a hash part (about 1 KB each: a world bench scene of 8000 boxes does not fit in
 ---the cache the scan reads through), and writes no stamp into the records it passes.
