@@ -5,9 +5,9 @@
 -- y, exactly once each, and its _cx0.._cy1 fields name that range. Inside a cell records
 -- keep insertion order. Scans visit each record once by stamping it with a number from
 -- the hash's own counter, so two hashes (two worlds) never disturb each other. The axis
--- scan of a packed hash (the world's solids on LuaJIT: see hash.new) reads each cell's packed copy
--- of its records' boxes instead and stamps nothing: a record met in two cells is added to
--- the probe's touch list once, checked on a tie.
+-- scan of a packed hash (the world's solids on LuaJIT: see hash.new) reads each cell's
+-- packed copy of its records' boxes instead and stamps nothing: a record met in two cells
+-- is added to the probe's touch list once, checked on a tie.
 --
 -- The hash stores what it is given: it reads and writes only the fields declared in
 -- budge.HashRecord. Cells are never freed: a world whose boxes stay in one area stops
