@@ -71,6 +71,13 @@ local world = {}
 ---@field package _mark? number budge.bump's mark: which move met it, or which leg's filter
 ---ignored it (bump.lua, plan_move)
 
+-- The solids' hash keeps packed copies of their boxes on LuaJIT only (hash.new says why):
+-- on Lua 5.4 the packed scan's reads of the probe cost more than the records' reads save
+-- (`lua5.4 bench/world.lua --way merged --count 1000 --frames 60`, 5 fresh runs,
+-- 2026-12-01: 3914 ns per move packed, 3850 not), and the copies cost memory. Both scans
+-- give the same answers (spec/hash_spec.lua).
+local PACKED = rawget(_G, "jit") ~= nil
+
 ---A world of solids, actors and tile layers. Made by budge.new_world.
 ---@class budge.World
 ---@field cell_size number side of a spatial hash cell
@@ -122,13 +129,6 @@ local world = {}
 ---@field package _contact_pool budge.Contact[] the frame contacts (reused)
 ---@field package _contact_sorted budge.Contact[] scratch: the pool's first n, sorted
 ---@field package _n_contacts integer
--- The solids' hash keeps packed copies of their boxes on LuaJIT only (hash.new says why):
--- on Lua 5.4 the packed scan's reads of the probe cost more than the records' reads save
--- (`lua5.4 bench/world.lua --way merged --count 1000 --frames 60`, 5 fresh runs,
--- 2026-12-01: 3914 ns per move packed, 3850 not), and the copies cost memory. Both scans
--- give the same answers (spec/hash_spec.lua).
-local PACKED = rawget(_G, "jit") ~= nil
-
 local World = {}
 World.__index = World
 
