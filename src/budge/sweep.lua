@@ -81,7 +81,6 @@ end
 ---@field sign number Hash:axis_stop's scratch over packed cells: 1 forward, -1 back
 ---@field signed_reach number reach times sign
 ---@field signed_pos number the low end of the faces that can stop the box, times sign
----@field signed_edge number where a face stops it from ahead, times sign
 ---@field face_slot integer the slot of the face on the axis in a packed cell (1-4)
 ---@field cross_slot integer the slot of the low side across the axis (1 or 2)
 ---@field scan_cx0 integer the first cell column and row of the scanned rectangle
@@ -93,7 +92,7 @@ end
 function sweep.new_probe()
   return {is_x = true, forward = true, pos = 0, size = 0, edge = 0, reach = 0, cross = 0,
     cross_end = 0, blocks_oneway = false, before = 0, path = 1, touch = {}, touched = 0,
-    cols = {}, rows = {}, sign = 1, signed_reach = 0, signed_pos = 0, signed_edge = 0,
+    cols = {}, rows = {}, sign = 1, signed_reach = 0, signed_pos = 0,
     face_slot = 1, cross_slot = 2, scan_cx0 = 0, scan_cy0 = 0, cell_size = 1}
 end
 
