@@ -263,6 +263,11 @@ local ENGINE = {[touch_response] = "touch", [cross_response] = "cross",
 ---@field package _region budge.Record[] what the move's first leg's rectangle overlaps
 ---(_region_n of them; the rectangle _region_left, _top, _right, _bottom)
 ---@field package _own budge.Record the running move's item's record (and _item, _w, _h)
+---@field package _leg_x number the running leg's start (_leg_x, _leg_y), its motion
+---(_leg_dx, _leg_dy), the start's far sides (_leg_x1, _leg_y1) and the rectangle it sweeps
+---(_left, _top, _right, _bottom), for nearest to read where it uses them
+---@field package _best budge.Record|false nearest's best candidate so far (and _best_t, the
+---leg time it is met at, and _best_axis)
 ---@field package _out table[] the running move's cols list and their pool (_out_pool)
 ---@field package _n integer how many cols it has
 ---@field package _visited_filter function the filter a custom response is given
@@ -389,6 +394,8 @@ function bump.newWorld(cell_size)
     _stamp = 0, -- counts moves: what a move met carries its stamp (visited)
     _pass = 0, -- the running leg's mark (see plan_move)
     _margin = cell_size / 4, -- how far a moved item's loose cells reach (World:move)
+    _leg_x = 0, _leg_y = 0, _leg_dx = 0, _leg_dy = 0, _leg_x1 = 0, _leg_y1 = 0, _left = 0,
+    _top = 0, _right = 0, _bottom = 0, _best = false, _best_t = 0, _best_axis = 0,
     _region = {}, _region_n = 0, _region_left = 0, _region_top = 0, _region_right = 0,
     _region_bottom = 0, -- what the move's first leg's rectangle overlaps
     _move_cols = {}, _move_pool = {},
@@ -457,6 +464,7 @@ function World:add(item, x, y, w, h)
   proxy._index = index
   local record = self._world._records[proxy]
   record._mark = 0
+  proxy._record = record -- (a move reads it here, not from the world's table of records)
   self._proxies[item] = proxy
   return item
 end
@@ -523,10 +531,18 @@ end
 
 -- True when record b comes before record a met at the same time: its centre nearer the
 -- box's, or as near and added earlier.
-local function candidate_before(b, a, x, y, w, h)
+local function candidate_before(self, b, a)
+  local x, y, w, h = self._leg_x, self._leg_y, self._w, self._h
   local da = square_distance(x, y, w, h, a.x, a.y, a.width, a.height)
   local db = square_distance(x, y, w, h, b.x, b.y, b.width, b.height)
   return db < da or db == da and b.id < a.id
+end
+
+-- The candidate `record`, met at leg time `first` (no later than the best so far) across
+-- `axis`, becomes the leg's best unless the best so far comes before it.
+local function offer(self, record, first, axis)
+  if first == self._best_t and not candidate_before(self, record, self._best) then return end
+  self._best, self._best_t, self._best_axis = record, first, axis
 end
 
 -- Makes the move's region (see plan_move) hold what the leg's rectangle overlaps: the
@@ -542,45 +558,50 @@ local function cover(self, left, top, right, bottom)
   end
 end
 
--- The first thing the leg from (x, y) by (dx, dy) meets that the move has not met or
--- passed over yet: its record, the leg time (an overlap at the start: minus its area,
--- so the deepest first) and the axis it is entered across (1: x, 2: y; budge's corner
--- rule: y when both at once), or nil. Ties go by the distance between centres, then by
--- the order items were added. Entry and exit times are sweep.box_enter's (the same roundings);
--- with no motion on an axis, the rectangle test made it overlap on that axis.
+-- The first thing the running leg (run_leg wrote it into self._leg_x and the fields after
+-- it) meets that the move has not met or passed over yet: its record, the leg time (an
+-- overlap at the start: minus its area, so the deepest first) and the axis it is entered
+-- across (1: x, 2: y; budge's corner rule: y when both at once), or nil. Ties go by the
+-- distance between centres, then by the order items were added. Entry and exit times are
+-- sweep.box_enter's (the same roundings); with no motion on an axis, the rectangle test
+-- made it overlap on that axis.
 -- LuaJIT shaping: one pass for the nearest, asked again only past what the filter lets
 -- through, instead of sorting every candidate: short loops of varying length (the sort,
--- the passes over a few candidates) are unrolled into every trace that runs them.
-local function nearest(self, x, y, dx, dy, left, top, right, bottom)
-  local w, h = self._w, self._h
-  local x1, y1 = x + w, y + h
+-- the passes over a few candidates) are unrolled into every trace that runs them. In the
+-- loop, the leg's values and the best so far are read from self where they are used, and
+-- each test is one comparison of a min of differences (exact: for finite numbers a - b > 0
+-- if and only if a > b): with the leg's values in locals and five comparisons, LuaJIT
+-- could not compile the loop's side exits ("NYI: register coalescing too complex", 1000 to
+-- 4000 aborts a run) and tried again all run long. `luajit bench/world.lua --way
+-- bump_boxes`, 7 fresh runs each, interleaved, 2026-12-01, with overlapping_in_cell's one
+-- test (hash.lua): 1000 items 1552 -> 1195 ns per move, 10000 items 3487 -> 3014.
+local function nearest(self)
   local region = self._region
-  local pass = self._pass
-  local best, best_t, best_axis = nil, HUGE, 0
+  self._best, self._best_t, self._best_axis = nil, HUGE, 0
   for i = 1, self._region_n do
     local record = region[i]
     local rx, ry = record.x, record.y
-    if rx < right and left < rx + record.width and ry < bottom and top < ry + record.height
-      and record._mark < pass then
+    if min(self._right - rx, rx + record.width - self._left, self._bottom - ry,
+      ry + record.height - self._top, self._pass - record._mark) > 0 then
       -- (a division by a negative delta swaps them; by 0, the overlap makes them -inf
       -- and inf: no branch on the direction)
-      local near_x, far_x = (rx - x1) / dx, (rx + record.width - x) / dx
-      local near_y, far_y = (ry - y1) / dy, (ry + record.height - y) / dy
+      local near_x = (rx - self._leg_x1) / self._leg_dx
+      local far_x = (rx + record.width - self._leg_x) / self._leg_dx
+      local near_y = (ry - self._leg_y1) / self._leg_dy
+      local far_y = (ry + record.height - self._leg_y) / self._leg_dy
       local enter_x, enter_y = min(near_x, far_x), min(near_y, far_y)
       local first, exit = max(enter_x, enter_y), min(max(near_x, far_x), max(near_y, far_y))
-      if first < exit and first < 1 and exit > 0 then
+      if min(exit - first, 1 - first, exit) > 0 then
+        local axis = enter_x > enter_y and 1 or 2
         if first < 0 then -- overlapping at the start: bump's negative measure of it
-          first = overlap_ti(x, y, w, h, rx, ry, record.width, record.height)
+          first = overlap_ti(self._leg_x, self._leg_y, self._w, self._h, rx, ry, record.width,
+            record.height)
         end
-        if first < best_t or first == best_t and candidate_before(record, best, x, y, w, h)
-        then
-          best, best_t = record, first
-          if enter_x > enter_y then best_axis = 1 else best_axis = 2 end
-        end
+        if first <= self._best_t then offer(self, record, first, axis) end
       end
     end
   end
-  return best, best_t, best_axis
+  return self._best, self._best_t, self._best_axis
 end
 
 -- Fills col for meeting `record` at leg time t (see leg_candidates) on the leg from (x, y)
@@ -694,8 +715,11 @@ local function run_leg(self, x, y, goal_x, goal_y)
   local right, bottom = max(x, goal_x) + w, max(y, goal_y) + h
   cover(self, left, top, right, bottom)
   self._pass = self._pass + 1 -- (records this leg's filter ignores are marked with it)
+  self._leg_x, self._leg_y, self._leg_dx, self._leg_dy = x, y, dx, dy
+  self._leg_x1, self._leg_y1 = x + w, y + h
+  self._left, self._top, self._right, self._bottom = left, top, right, bottom
   for _ = 1, self._region_n do -- (each round meets one candidate: at most all of them)
-    local other, t, axis = nearest(self, x, y, dx, dy, left, top, right, bottom)
+    local other, t, axis = nearest(self)
     if other == nil then break end
     local stop, next_x, next_y, next_goal_x, next_goal_y = meet(self, other, t, axis, x, y,
       goal_x, goal_y)
@@ -724,7 +748,7 @@ end
 ---@return number x, number y, integer n where the item ends, and how many cols
 function plan_move(self, proxy, goal_x, goal_y, filter, list, pool)
   self._running = true
-  local own = self._world._records[proxy]
+  local own = proxy._record
   self._own = own
   -- Marks: a move's marks begin at _stamp, a whole MARK_SPAN above the last move's; a
   -- leg skips a record whose mark is at least its own (_stamp + leg): one its filter
@@ -802,7 +826,7 @@ function World:move(item, goal_x, goal_y, filter)
     self._move_pool)
   if x ~= proxy.x or y ~= proxy.y then
     proxy.x, proxy.y = x, y
-    local record = self._world._records[proxy]
+    local record = proxy._record
     record.x, record.y = x, y
     -- Loose cells: a moved item is registered in the cells of its box grown by a quarter
     -- cell each way, and registered again only when its box leaves them (a hash lookup

@@ -305,11 +305,16 @@ end
 
 -- Appends the records of one cell that overlap the rectangle (x0, y0)-(x1, y1) strictly
 -- and are not stamped yet to `out`, stamping them.
+-- LuaJIT shaping: the overlap as one test, the min of the differences (exact: for finite
+-- numbers a - b > 0 if and only if a > b), not four comparisons, each a side exit when it
+-- fails: budge.bump's moves (`luajit bench/world.lua --way bump_boxes`, 5 fresh runs each,
+-- interleaved, 2026-12-01) 3830 -> 3016 ns per move with 10000 items, 1414 -> 1316 with
+-- 1000, alone.
 local function overlapping_in_cell(cell, stamp, x0, y0, x1, y1, out, n)
   for i = 1, #cell do
     local record = cell[i]
-    if record.x < x1 and x0 < record.x + record.width and record.y < y1
-      and y0 < record.y + record.height and record._stamp ~= stamp then
+    if min(x1 - record.x, record.x + record.width - x0, y1 - record.y,
+      record.y + record.height - y0) > 0 and record._stamp ~= stamp then
       record._stamp = stamp
       n = n + 1
       out[n] = record
