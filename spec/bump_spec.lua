@@ -503,6 +503,17 @@ describe("budge.bump", function()
       end
     end)
 
+    it("breaks ties in time by the nearer centre, whichever the hash finds first", function()
+      for _, order in ipairs({{"far", "near"}, {"near", "far"}}) do
+        local world = bump.newWorld(64) -- (one cell: found in the order added)
+        world:add("m", 0, 0, 10, 10)
+        local at = {far = 8, near = 1} -- (centres 8 and 1 px across from m's, 20 below)
+        for _, name in ipairs(order) do world:add(name, at[name], 20, 10, 10) end
+        local _, y, cols, len = world:move("m", 0, 40, function() return "touch" end)
+        assert.same({10, 1, "near"}, {y, len, cols[1].other})
+      end
+    end)
+
     it("bounces as often as a move needs (bump's loop has no cap)", function()
       local world = bump.newWorld(32)
       for col = 0, 400 do -- a corridor of short tiles, 25 px high
