@@ -514,6 +514,18 @@ describe("budge.bump", function()
       end
     end)
 
+    it("gives a touch at the start of the move a ti of +0 on every interpreter", function()
+      -- (entry times -0 on y and 0 on x: math.max returns either zero on a tie, LuaJIT's
+      -- the second, Lua's the first)
+      for _ = 1, 200 do -- (enough moves for LuaJIT to compile them)
+        local world = bump.newWorld(64)
+        world:add("a", -10, -10, 10, 10)
+        world:add("b", 0, -(0 * 1.5), 10, 10)
+        local _, _, cols, len = world:check("a", -5, -5)
+        assert.same({1, math.huge}, {len, 1 / cols[1].ti})
+      end
+    end)
+
     it("bounces as often as a move needs (bump's loop has no cap)", function()
       local world = bump.newWorld(32)
       for col = 0, 400 do -- a corridor of short tiles, 25 px high

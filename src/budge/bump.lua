@@ -266,11 +266,12 @@ local ENGINE = {[touch_response] = "touch", [cross_response] = "cross",
 ---@field package _region budge.Record[] what the move's first leg's rectangle overlaps
 ---(_region_n of them; the rectangle _region_left, _top, _right, _bottom)
 ---@field package _own budge.Record the running move's item's record (and _item, _w, _h)
----@field package _leg_x number the running leg's start (_leg_x, _leg_y), its motion
----(_leg_dx, _leg_dy), the start's far sides (_leg_x1, _leg_y1) and the rectangle it sweeps
----(_left, _top, _right, _bottom), for nearest to read where it uses them
----@field package _best budge.Record|false nearest's best candidate so far (and _best_t, the
----leg time it is met at, and _best_axis)
+---@field package _leg_x number on LuaJIT, the running leg's start (_leg_x, _leg_y), its
+---motion (_leg_dx, _leg_dy), the start's far sides (_leg_x1, _leg_y1) and the rectangle it
+---sweeps (_leg_left, _leg_top, _leg_right, _leg_bottom), for nearest to read where it uses
+---them (run_leg writes them)
+---@field package _best budge.Record|false|nil on LuaJIT, nearest's best candidate so far
+---(nil: none; and _best_t, the leg time it is met at, and _best_axis)
 ---@field package _out table[] the running move's cols list and their pool (_out_pool)
 ---@field package _n integer how many cols it has
 ---@field package _visited_filter function the filter a custom response is given
@@ -397,8 +398,9 @@ function bump.newWorld(cell_size)
     _stamp = 0, -- counts moves: what a move met carries its stamp (visited)
     _pass = 0, -- the running leg's mark (see plan_move)
     _margin = cell_size / 4, -- how far a moved item's loose cells reach (World:move)
-    _leg_x = 0, _leg_y = 0, _leg_dx = 0, _leg_dy = 0, _leg_x1 = 0, _leg_y1 = 0, _left = 0,
-    _top = 0, _right = 0, _bottom = 0, _best = false, _best_t = 0, _best_axis = 0,
+    _leg_x = 0, _leg_y = 0, _leg_dx = 0, _leg_dy = 0, _leg_x1 = 0, _leg_y1 = 0,
+    _leg_left = 0, _leg_top = 0, _leg_right = 0, _leg_bottom = 0,
+    _best = false, _best_t = 0, _best_axis = 0, -- (false until the first leg)
     _region = {}, _region_n = 0, _region_left = 0, _region_top = 0, _region_right = 0,
     _region_bottom = 0, -- what the move's first leg's rectangle overlaps
     _move_cols = {}, _move_pool = {},
@@ -584,7 +586,9 @@ local function nearest_compared(self, x, y, dx, dy, left, top, right, bottom)
       local near_x, far_x = (rx - x1) / dx, (rx + record.width - x) / dx
       local near_y, far_y = (ry - y1) / dy, (ry + record.height - y) / dy
       local enter_x, enter_y = min(near_x, far_x), min(near_y, far_y)
-      local first, exit = max(enter_x, enter_y), min(max(near_x, far_x), max(near_y, far_y))
+      -- (+ 0: -0 becomes 0, for math.max gives either zero on a tie, by interpreter)
+      local first = max(enter_x, enter_y) + 0
+      local exit = min(max(near_x, far_x), max(near_y, far_y))
       if first < exit and first < 1 and exit > 0 then
         if first < 0 then
           first = overlap_ti(x, y, w, h, rx, ry, record.width, record.height)
@@ -622,8 +626,8 @@ local function nearest(self)
   for i = 1, self._region_n do
     local record = region[i]
     local rx, ry = record.x, record.y
-    if min(self._right - rx, rx + record.width - self._left, self._bottom - ry,
-      ry + record.height - self._top, self._pass - record._mark) > 0 then
+    if min(self._leg_right - rx, rx + record.width - self._leg_left, self._leg_bottom - ry,
+      ry + record.height - self._leg_top, self._pass - record._mark) > 0 then
       -- (a division by a negative delta swaps them; by 0, the overlap makes them -inf
       -- and inf: no branch on the direction)
       local near_x = (rx - self._leg_x1) / self._leg_dx
@@ -631,7 +635,9 @@ local function nearest(self)
       local near_y = (ry - self._leg_y1) / self._leg_dy
       local far_y = (ry + record.height - self._leg_y) / self._leg_dy
       local enter_x, enter_y = min(near_x, far_x), min(near_y, far_y)
-      local first, exit = max(enter_x, enter_y), min(max(near_x, far_x), max(near_y, far_y))
+      -- (+ 0: -0 becomes 0, for math.max gives either zero on a tie, by interpreter)
+      local first = max(enter_x, enter_y) + 0
+      local exit = min(max(near_x, far_x), max(near_y, far_y))
       if min(exit - first, 1 - first, exit) > 0 then
         local axis = enter_x > enter_y and 1 or 2
         if first < 0 then -- overlapping at the start: bump's negative measure of it
@@ -759,7 +765,7 @@ local function run_leg(self, x, y, goal_x, goal_y)
   if BRANCH_FREE then -- (nearest reads them from here)
     self._leg_x, self._leg_y, self._leg_dx, self._leg_dy = x, y, dx, dy
     self._leg_x1, self._leg_y1 = x + w, y + h
-    self._left, self._top, self._right, self._bottom = left, top, right, bottom
+    self._leg_left, self._leg_top, self._leg_right, self._leg_bottom = left, top, right, bottom
   end
   for _ = 1, self._region_n do -- (each round meets one candidate: at most all of them)
     local other, t, axis

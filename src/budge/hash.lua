@@ -311,7 +311,7 @@ function Hash:collect(x, y, width, height, out, n)
 end
 
 -- overlapping_in_cell on Lua 5.1-5.4, with comparisons: there math.min is a call into C
--- (see budge.bump's nearest for what the LuaJIT form costs there).
+-- (budge.bump's nearest_compared has what the LuaJIT forms cost there).
 local function overlapping_compared(cell, stamp, x0, y0, x1, y1, out, n)
   for i = 1, #cell do
     local record = cell[i]
@@ -328,7 +328,7 @@ end
 -- Appends the records of one cell that overlap the rectangle (x0, y0)-(x1, y1) strictly
 -- and are not stamped yet to `out`, stamping them.
 -- LuaJIT shaping: the overlap as one test, the min of the differences (exact: for finite
--- numbers a - b > 0 if and only if a > b), not four comparisons, each a side exit when it
+-- numbers a - b > 0 if and only if a > b, see scan_packs), not four comparisons, each a side exit when it
 -- fails: budge.bump's moves (`luajit bench/world.lua --way bump_boxes`, 5 fresh runs each,
 -- interleaved, 2026-12-01) 3830 -> 3016 ns per move with 10000 items, 1414 -> 1316 with
 -- 1000, alone.
@@ -487,14 +487,16 @@ local function consider_packed(probe, pack, base, face, cx, cy)
 end
 
 -- scan_cell over the packed boxes of the cells the probe's rectangle touches: `count`
--- cells, `columns` to a row, from (cx0, cy0), in the order of the cell loop below.
+-- cells, `columns` to a row, from (cx0, cy0), row by row.
 -- probe.face_slot and cross_slot are the slots of the face on the axis and of the low side
 -- across it (1: x, 2: y, 3: right, 4: bottom); probe.sign is 1 moving forward and -1
 -- moving back, so that one test on the face times the sign keeps what stop_forward or
 -- stop_backward can stop at: a face at or short of the reach, at or ahead of the box's
 -- start (a superset: stop_at decides). Across, the strict overlap, exactly: for finite
 -- numbers a - b > 0 if and only if a > b (a difference rounds to 0 only when they are
--- equal), and the face test's min is at least 0 exactly when min + TINY is above 0.
+-- equal, with IEEE gradual underflow, which Lua and LuaJIT run with unless native code
+-- in the process turns it off); the face test's min + TINY is above 0 whenever the min
+-- is at least 0 (and for a negative subnormal min too: still a superset).
 -- LuaJIT shaping, both measured on `luajit bench/world.lua --way boxes --count 1000`
 -- (5 fresh runs each, interleaved, 2026-12-01):
 -- * one loop over the entries of all the cells, not a loop over cells calling a loop over
@@ -514,7 +516,7 @@ local function scan_packs(cells, probe, cx0, cy0, columns, count)
   while true do
     if base > last then -- the next cell
       k = k + 1
-      if k >= count then break end
+      if not (k < count) then break end -- luacheck: ignore (not >=: a NaN count ends it too)
       local row = floor(k / columns)
       cx, cy = cx0 + (k - row * columns), cy0 + row
       local cell = cells[cx + cy * KEY_STRIDE + KEY_OFFSET] -- (the key insert uses)
@@ -558,11 +560,6 @@ function Hash:axis_stop(x, y, width, height, probe)
     scan_cell(self._all, stamp, probe)
     return
   end
-  -- Unpacked cells, LuaJIT shaping: one flat loop over the cells, not two nested ones (one
-  -- loop trace instead of one per level): 797 ns per move instead of 839 on merged boxes, 1015 and
-  -- 1019 on boxes, within noise (`luajit bench/world.lua --profile merged`, median of 5,
-  -- 2026-12-01); kept for the traces it saves (make bench-jit). The key is the one
-  -- expression insert uses, for the cell (cx0 + column, cy0 + row).
   if self._packed then
     local forward = probe.forward
     local sign = forward and 1 or -1
@@ -572,7 +569,7 @@ function Hash:axis_stop(x, y, width, height, probe)
     else probe.face_slot, probe.cross_slot = forward and 2 or 4, 1 end
     probe.scan_cx0, probe.scan_cy0, probe.cell_size = cx0, cy0, size
     scan_packs(cells, probe, cx0, cy0, columns, count)
-  else
+  else -- (one flat loop over the cells, as in collect; the key is the one insert uses)
     for k = 0, count - 1 do
       local row = floor(k / columns)
       local cell = cells[(cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
