@@ -173,23 +173,19 @@ end
 
 -- Takes `record` out of one cell, keeping the others' insertion order (shift, don't swap),
 -- and out of the cell's packed boxes when it has them.
--- LuaJIT shaping: the search ends by a break, not a return from inside its loop (see
--- scan_packs): with the return, LuaJIT at times compiled the loop as a trace that returns
--- ("hash.lua:178 return" in `luajit -jv bench/world.lua --way bump_boxes --count 100`),
--- which every trace reaching the loop then aborts on.
 local function unlist_cell(cell, record)
   local count = #cell
-  local i = count + 1
-  for at = 1, count do
-    if cell[at] == record then i = at break end
-  end
-  if i > count then return end
-  for j = i, count - 1 do cell[j] = cell[j + 1] end
-  cell[count] = nil
-  local pack = cell.pack
-  if pack then
-    for j = i * 6 - 5, count * 6 - 6 do pack[j] = pack[j + 6] end
-    for j = count * 6 - 5, count * 6 do pack[j] = nil end
+  for i = 1, count do
+    if cell[i] == record then
+      for j = i, count - 1 do cell[j] = cell[j + 1] end
+      cell[count] = nil
+      local pack = cell.pack
+      if pack then
+        for j = i * 6 - 5, count * 6 - 6 do pack[j] = pack[j + 6] end
+        for j = count * 6 - 5, count * 6 do pack[j] = nil end
+      end
+      return
+    end
   end
 end
 
