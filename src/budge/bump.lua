@@ -535,23 +535,20 @@ local function response_of(self, answer, other)
 end
 
 -- True when record b comes before record a met at the same time: its centre nearer the
--- box's, or as near and added earlier.
--- (of the box (x, y, w, h))
+-- centre of the box (x, y, w, h), or as near and added earlier.
 local function centre_before(b, a, x, y, w, h)
   local da = square_distance(x, y, w, h, a.x, a.y, a.width, a.height)
   local db = square_distance(x, y, w, h, b.x, b.y, b.width, b.height)
   return db < da or db == da and b.id < a.id
 end
 
--- (of the running leg's box)
-local function candidate_before(self, b, a)
-  return centre_before(b, a, self._leg_x, self._leg_y, self._w, self._h)
-end
-
 -- The candidate `record`, met at leg time `first` (no later than the best so far) across
 -- `axis`, becomes the leg's best unless the best so far comes before it.
 local function offer(self, record, first, axis)
-  if first == self._best_t and not candidate_before(self, record, self._best) then return end
+  if first == self._best_t
+    and not centre_before(record, self._best, self._leg_x, self._leg_y, self._w, self._h) then
+    return
+  end
   self._best, self._best_t, self._best_axis = record, first, axis
 end
 
