@@ -315,4 +315,39 @@ describe("clear errors", function()
       'actor.y must be a finite number, got "oops"')
     assert.has_error(function() world:update(solid) end, 'box.x must be a finite number, got "5"')
   end)
+
+  it("a move checks a box that differs from the one the world last checked: a size a filter "
+    .. "broke during the last move, a string equal in value, a moving solid's push", function()
+    local world = budge.new_world()
+    local actor = world:add_actor(box(20, 0, 10, 10))
+    world:add_sensor(box(40, 0, 10, 10))
+    local function move(dx, dy)
+      local x, y, n = world:move(actor, dx, dy)
+      return {x, y, n}
+    end
+    actor.filter = function(self) self.width = "oops"; return "cross" end
+    assert.same({31, 0, 1}, move(11, 0))
+    actor.filter = nil
+    -- queries read the size the world checked, and the next move names the field
+    local found, n = world:query_point(40.5, 5)
+    assert.same({actor, 2}, {found[1], n}) -- (and the sensor)
+    assert.has_error(function() world:move(actor, 1, 0) end,
+      'actor.width must be a finite number >= 0, got "oops"')
+    actor.width = "10" -- (equal in value to the size checked, but a string)
+    assert.has_error(function() world:move(actor, 1, 0) end,
+      'actor.width must be a finite number >= 0, got "10"')
+    actor.width = 4 -- a new size: checked, then copied
+    assert.same({32, 0, 0}, move(1, 0))
+    assert.same(0, select(2, world:query_point(37, 5)))
+    -- a moving solid's push copies the position only: the size stays the one checked
+    local pusher = world:add_solid(box(20, 20, 10, 10))
+    actor.x, actor.y, actor.width = 30, 20, 4
+    world:update(actor)
+    actor.width = 8
+    world:move_solid(pusher, 4, 0)
+    assert.same({34, 20}, {actor.x, actor.y})
+    assert.same(0, select(2, world:query_point(39, 25))) -- (34 + 4 < 39 < 34 + 8)
+    assert.same({38, 20, 0}, move(4, 0))
+    assert.same({{actor}, 1}, {world:query_point(45, 25)}) -- (now 38 + 8)
+  end)
 end)

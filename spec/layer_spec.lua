@@ -1,6 +1,7 @@
--- budge.layer's axis scans (tile_face, read from the reach tables, and tile_face_scan,
--- the line scan a world with hashed solids uses) against a brute force over every tile
--- of the layer, and the reach tables kept up to date by world:update.
+-- budge.layer's axis scans (tile_face, read from the reach tables, tile_face_scan, the
+-- line scan a world with hashed solids uses on LuaJIT, and tile_stop, Lua 5.x's form of
+-- tile_face) against a brute force over every tile of the layer, and the reach tables
+-- kept up to date by world:update.
 local layer = require("budge.layer")
 local sweep = require("budge.sweep")
 local random_source = require("fixtures.random")
@@ -56,7 +57,7 @@ local function probe_for(is_x, forward, pos, size, delta, cross, cross_size)
 end
 
 describe("budge.layer's axis scan", function()
-  it("both find the face and the tiles on it that a brute force over every tile finds, in "
+  it("all three find the face and the tiles on it that a brute force over every tile finds, in "
     .. "40000 random layers and moves (dyadic and non-dyadic origins, oneway tiles, moves "
     .. "short and long, boxes of size 0 to several tiles)", function()
     local rng = random_source.new(20261202)
@@ -82,9 +83,15 @@ describe("budge.layer's axis scan", function()
       local p = probe_for(is_x, forward, pos, size, delta, rng(-40, 240) / 4, rng(0, 80) / 4)
       local want, list = brute(grid, cols, rows, opts, tile_w, tile_h, p)
       local face
-      for _, scan in ipairs({"tile_face", "tile_face_scan"}) do
+      for _, scan in ipairs({"tile_face", "tile_face_scan", "tile_stop"}) do
         local count
-        face, count = layer[scan](tiles, p)
+        if scan == "tile_stop" then -- (from the probe's inputs; its own output lists)
+          p.cols, p.rows = {}, {}
+          face, count = layer.tile_stop(tiles, p.is_x, p.forward, p.pos, p.size, p.delta,
+            p.cross, p.cross_end, p.cols, p.rows)
+        else
+          face, count = layer[scan](tiles, p)
+        end
         assert.are.equal(want, face, scan .. ", case " .. case)
         assert.are.equal(#list, count, scan .. ", case " .. case)
         for i = 1, count do

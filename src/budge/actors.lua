@@ -3,12 +3,18 @@
 -- brought up to date lazily. A move only notes that its actor moved; the next query
 -- rehashes the noted actors, so a frame of moves pays nothing for the hash. Each record
 -- keeps a copy of its actor's box as the world last checked it (at add, update and each
--- move): queries read the copy, so a field the game overwrote since is never read.
+-- move; a moving solid that pushes it copies its position only): queries read the copy,
+-- so a field the game overwrote since is never read, and a move whose actor's box equals
+-- the copy need not check it again.
 -- Sensors are kept the same way, in a list and a hash of their own (they move only
 -- through world:update). Each record also keeps where its box was when the frame began
 -- (the last world:contacts, its add or its update), for frame contacts.
 
+local is_finite = require((...):match("^(.*)%.[^%.]+$") .. ".box").is_finite
+
 local actors = {}
+
+local function is_size(value) return is_finite(value) and value >= 0 end
 
 -- The list and hash an actor's or a sensor's record lives in.
 local function home(world, record)
@@ -47,6 +53,27 @@ function actors.remove(world, record)
   last.index = record.index
   list[#list] = nil
   record.index = nil
+end
+
+---Copies the actor's size into its record after a move, if it is still a size (a filter
+---may have changed it during the move; the next move checks it, see World:move).
+---@param record budge.Record
+function actors.copy_size(record)
+  local width, height = record.item.width, record.item.height
+  if is_size(width) and is_size(height) then
+    record.width, record.height = width, height
+  end
+end
+
+---Re-registers an actor's record in the cells of its box after a moving solid placed it:
+---its new position, with the size the world last checked (the next move checks the
+---actor's own, see World:move).
+---@param world budge.World
+---@param record budge.Record
+function actors.placed(world, record)
+  local item = record.item
+  record.x, record.y = item.x, item.y
+  world._actors:moved(record, record.x, record.y, record.width, record.height)
 end
 
 ---Notes that an actor moved: its cells are brought up to date by actors.rehash.

@@ -60,7 +60,7 @@ local function shove(world, record, is_x, target)
   end
   probe.actor, probe.filter = nil, nil
   actor.x, actor.y = x, y
-  actors.rehash_one(world, record)
+  actors.placed(world, record)
   return pos == target
 end
 

@@ -271,10 +271,8 @@ end
 -- used rather than kept in locals, one or two tiles across read without a loop, and
 -- move.lua's axis_phase tail-calling phase_stop.
 
--- LuaJIT takes the branch-free forms below (math.min and math.max compile to no branch
--- there); Lua 5.1-5.4 take the loops, where math.min is a call into C and a branch is
--- cheap.
-local BRANCH_FREE = rawget(_G, "jit") ~= nil
+-- This shape is LuaJIT's: Lua 5.1-5.4 answer with layer.tile_stop below, the same
+-- arithmetic in one function (there each call costs more than the reads it saves).
 
 -- The first line whose low face is past `at` (`strict`), or at or past it: the line
 -- index, its face checked against `at` itself (the division may round across it).
@@ -318,7 +316,7 @@ local function list_line(tiles, probe, line, first, last, face)
   end
   local out_cols, out_rows = probe.cols, probe.rows
   local found = 0
-  if last - first > 1 or not BRANCH_FREE then
+  if last - first > 1 then
     for i = first, last do
       if reach[base + i * cross_stride] == line then
         found = found + 1
@@ -351,18 +349,6 @@ end
 -- no branch on LuaJIT); the loop runs only for a box more than two tiles across.
 local function nearest_line(reach, at, step, first, last, forward)
   local best
-  if not BRANCH_FREE then
-    best = reach[at]
-    for i = 1, last - first do
-      local line = reach[at + i * step]
-      if forward then
-        if line < best then best = line end
-      elseif line > best then
-        best = line
-      end
-    end
-    return best
-  end
   if forward then
     best = min(reach[at], reach[at + (last - first) * step])
     for i = 1, last - first - 1 do best = min(best, reach[at + i * step]) end
@@ -448,6 +434,135 @@ function layer.tile_face(tiles, probe)
   local line, face = nearest_face(tiles, probe, first, last)
   if line == nil then return nil, 0 end
   return face, list_line(tiles, probe, line, first, last, face)
+end
+
+---layer.tile_face's answer on Lua 5.1-5.4, from its inputs rather than a probe: the box
+---at `pos` (of `size`) on the axis moving by `delta` (`forward`: delta > 0), from `cross`
+---to `cross_end` across it; the tiles on the face into out_cols and out_rows.
+---Speed: the same arithmetic and reads as tile_face, with span, ahead, behind,
+---nearest_line and list_line written out and comparisons for min and max (on Lua 5.x a
+---call, even to math.min, costs more than a branch). `lua5.4 bench/world.lua --way tiles
+-----count 1000 --frames 60`, 3 fresh runs each, interleaved, 2026-12-02, with move.lua's
+---layers_stop: 2196-2323 ns per move through tile_face and phase_stop, 1740-1750 through
+---this. On LuaJIT its loops cost more than the calls (the same move took 786 ns against
+---152): LuaJIT keeps tile_face. spec/layer_spec.lua holds both to a brute force.
+---@param tiles budge.TileLayer
+---@param is_x boolean
+---@param forward boolean
+---@param pos number
+---@param size number
+---@param delta number
+---@param cross number
+---@param cross_end number
+---@param out_cols integer[]
+---@param out_rows integer[]
+---@return number? face, integer count
+function layer.tile_stop(tiles, is_x, forward, pos, size, delta, cross, cross_end, out_cols,
+                         out_rows)
+  local cols = tiles.cols
+  local origin, tile, inverse, count, stride
+  local low, side, inverse_side, count_across, cross_stride
+  if is_x then
+    origin, tile, inverse, count, stride = tiles.x, tiles.tile_width, tiles._inverse_width, cols, 1
+    low, side, inverse_side, count_across, cross_stride = tiles.y, tiles.tile_height,
+      tiles._inverse_height, tiles.rows, cols
+  else
+    origin, tile, inverse, count, stride = tiles.y, tiles.tile_height, tiles._inverse_height,
+      tiles.rows, cols
+    low, side, inverse_side, count_across, cross_stride = tiles.x, tiles.tile_width,
+      tiles._inverse_width, cols, 1
+  end
+  -- the tiles across (span)
+  local first = floor((cross - low) * inverse_side)
+  if low + first * side > cross then first = first - 1
+  elseif low + (first + 1) * side <= cross then first = first + 1 end
+  local last = ceil((cross_end - low) * inverse_side) - 1
+  if low + (last + 1) * side < cross_end then last = last + 1
+  elseif low + last * side >= cross_end then last = last - 1 end
+  if first < 0 then first = 0 end
+  if last > count_across - 1 then last = count_across - 1 end
+  if first > last then return nil, 0 end
+  local edge = pos + size
+  local strict = pos < edge
+  local reach, down_any = tiles._reach, tiles._down_any
+  local line, face, base
+  if forward then
+    local j = ceil((pos - origin) * inverse) -- (ahead)
+    local near = origin + j * tile
+    if near < pos or (strict and near == pos) then j = j + 1
+    else
+      near = origin + (j - 1) * tile
+      if near > pos or (not strict and near == pos) then j = j - 1 end
+    end
+    if j < 0 then j = 0 elseif j >= count then return nil, 0 end
+    local at, step = (j * stride + first * cross_stride) * 4 + (is_x and RIGHT or DOWN),
+      cross_stride * 4
+    line = reach[at] -- (nearest_line)
+    for i = 1, last - first do
+      local next_line = reach[at + i * step]
+      if next_line < line then line = next_line end
+    end
+    if not is_x and down_any then -- oneway tiles, from the first row at or below the box
+      j = ceil((edge - origin) * inverse)
+      near = origin + j * tile
+      if near < edge then j = j + 1
+      elseif origin + (j - 1) * tile >= edge then j = j - 1 end
+      if j < 0 then j = 0 end
+      if j < count then
+        at = j * cols + first + 1
+        for i = 0, last - first do
+          local next_line = down_any[at + i]
+          if next_line < line then line = next_line end
+        end
+      end
+    end
+    if line >= count then return nil, 0 end
+    face = origin + line * tile
+    if face >= edge + delta then return nil, 0 end
+    if is_x then base = line * 4 + RIGHT
+    elseif down_any and face >= edge then -- (list_line: the oneway table's tiles)
+      local found = 0
+      base = line * cols + 1
+      for i = first, last do
+        if down_any[base + i] == line then
+          found = found + 1
+          out_cols[found], out_rows[found] = i + 1, line + 1
+        end
+      end
+      return face, found
+    else base = line * cols * 4 + DOWN end
+  else
+    local j = floor((edge - origin) * inverse) - 1 -- (behind)
+    local high = origin + (j + 1) * tile
+    if high > edge or (strict and high == edge) then j = j - 1
+    else
+      high = origin + (j + 2) * tile
+      if high < edge or (not strict and high == edge) then j = j + 1 end
+    end
+    if j > count - 1 then j = count - 1 end
+    if j < 0 then return nil, 0 end
+    local at, step = (j * stride + first * cross_stride) * 4 + (is_x and LEFT or UP),
+      cross_stride * 4
+    line = reach[at]
+    for i = 1, last - first do
+      local next_line = reach[at + i * step]
+      if next_line > line then line = next_line end
+    end
+    if line < 0 then return nil, 0 end
+    face = origin + (line + 1) * tile
+    if face <= pos + delta then return nil, 0 end
+    if is_x then base = line * 4 + LEFT else base = line * cols * 4 + UP end
+  end
+  local step = is_x and cols * 4 or 4 -- (list_line)
+  local found = 0
+  for i = first, last do
+    if reach[base + i * step] == line then
+      found = found + 1
+      if is_x then out_cols[found], out_rows[found] = line + 1, i + 1
+      else out_cols[found], out_rows[found] = i + 1, line + 1 end
+    end
+  end
+  return face, found
 end
 
 -- The line scan -------------------------------------------------------------------

@@ -28,7 +28,8 @@ local hits = require(here .. ".hits")
 local overlaps = box.overlaps
 local before, first_contact = sweep.before, sweep.first_contact
 local NORMAL_X, NORMAL_Y = sweep.NORMAL_X, sweep.NORMAL_Y
-local tile_face, tile_face_scan = layer.tile_face, layer.tile_face_scan
+local tile_face, tile_face_scan, tile_stop = layer.tile_face, layer.tile_face_scan,
+  layer.tile_stop
 local gather, clip_to_boxes, clip_to_bounds = solids.gather, solids.clip_to_boxes,
   solids.clip_to_bounds
 local gather_sensors, gather_all = solids.gather_sensors, solids.gather_all
@@ -51,6 +52,9 @@ local MAX_STEPS = 4096
 -- narrower than its move); it stops at the last one.
 local MAX_BOUNCES = 16
 local HUGE = math.huge
+-- LuaJIT takes phase_stop's shape (the move's values in the probe, tile_face's reads);
+-- Lua 5.1-5.4 layers_stop's (positional values, layer.tile_stop): see layers_stop.
+local BRANCH_FREE = rawget(_G, "jit") ~= nil
 
 local move = {}
 
@@ -80,6 +84,48 @@ local function hash_phase(world, probe)
   end
 end
 
+-- Lua 5.1-5.4's form of phase_stop's layer half (the LuaJIT shaping there is no help on
+-- Lua 5.x, and each probe field written and read again costs there): the nearest stop
+-- among the tile layers for the box at `pos` (of `size`) on the axis, from `cross` to
+-- `cross_end` across it, moving by `delta`, `done` px into a move of `path` px, with its
+-- tiles as hits; nil when no tile stops it. The same outcomes as phase_stop's loop
+-- (spec/world_spec.lua's catalogue and the bit-identical runs of make test compare them
+-- across interpreters).
+-- Speed: `lua5.4 bench/world.lua --way tiles --count 1000 --frames 60`, 3 fresh runs
+-- each, interleaved, 2026-12-02: 2196-2323 ns per move through axis_phase, phase_stop and
+-- tile_face, 1740-1750 through this and layer.tile_stop.
+local function layers_stop(world, is_x, pos, cross, cross_end, size, delta, done, path)
+  local first_hit, forward = world._n_hits, delta > 0
+  local layers, probe = world._layers, world._probe
+  local cols, rows = probe.cols, probe.rows
+  local best
+  for k = 1, #layers do
+    local tiles = layers[k]
+    local record = world._records[tiles] -- (nil: removed by a filter earlier in this move)
+    if record then
+      local face, count = tile_stop(tiles, is_x, forward, pos, size, delta, cross,
+        cross_end, cols, rows)
+      if face then
+        local stop = face
+        if forward then stop = face >= pos + size and before(face, size, pos) or pos
+        elseif face > pos then stop = pos end
+        if best == nil or (forward and stop <= best) or (not forward and stop >= best) then
+          if stop ~= best then best = stop; world._n_hits = first_hit end
+          local side
+          if is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
+          local t = (done + (forward and stop - pos or pos - stop)) / path
+          for c = 1, count do
+            local col, row = cols[c], rows[c]
+            add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
+              tiles.x + (col - 1) * tiles.tile_width, record.id, SLIDE, t)
+          end
+        end
+      end
+    end
+  end
+  return best
+end
+
 -- The rest of axis_phase, from what it wrote into the probe: the nearest stop among the
 -- layers and the hashed solids, with its contacts. LuaJIT shaping: the move's values are
 -- read from the probe, not carried in locals of axis_phase (see layer.lua's axis scan);
@@ -90,45 +136,50 @@ local function phase_stop(world, probe)
   local first_hit, solid_count = world._n_hits, world._solid_count
   local best
   local layers = world._layers
-  for k = 1, #layers do
-    local tiles = layers[k]
-    -- a layer removed by a filter earlier in this move is skipped (one the filter removes
-    -- now, returning true, is met this once, as a solid is)
-    if world._records[tiles] then
-      local face, count
-      -- LuaJIT shaping: the reach read (tile_face) only in a world of tiles and actors;
-      -- with hashed solids or sensors, the line scan, whose loops end traces. The reach
-      -- read has no loop, so every path through a move compiles on into the rest of the
-      -- move (the hash scan, the sensors, the game's loop) as traces of its own: in the
-      -- world bench's tile scene that is 157 ns per move instead of 263, but with
-      -- solids (make bench-jit's platformer) LuaJIT could not compile the hash scan's side
-      -- traces (20-26 flushes in 3000 frames and 0.5-0.8 ms per frame instead of 4 and
-      -- 0.036), and with sensors (bench/contacts.lua) it needed 2980 traces instead of
-      -- 2481, so that at the default budget its moves took 19400 ns per actor instead of
-      -- 8100 (2026-12-01); with sensors_crossed left to the interpreter, 1611-1811 ns
-      -- instead of 1213-1222 with a budget that never runs out. Both scans give the same
-      -- answer (spec/layer_spec.lua).
-      if solid_count > 0 or world._sensor_count > 0 then
-        face, count = tile_face_scan(tiles, probe)
-      else
-        face, count = tile_face(tiles, probe)
-      end
-      if face then -- the stop there, and its tiles as hits when it is the nearest yet
-        local pos, size, forward = probe.pos, probe.size, probe.forward
-        local stop = face -- (the outcomes sweep.stop_forward / stop_backward give)
-        if forward then stop = face >= pos + size and before(face, size, pos) or pos
-        elseif face > pos then stop = pos end
-        if best == nil or (forward and stop <= best) or (not forward and stop >= best) then
-          if stop ~= best then best = stop; world._n_hits = first_hit end
-          local side
-          if probe.is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
-          local id = world._records[tiles].id
-          local cols, rows = probe.cols, probe.rows
-          local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
-          for c = 1, count do
-            local col, row = cols[c], rows[c]
-            add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
-              tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
+  if not BRANCH_FREE then
+    best = layers_stop(world, probe.is_x, probe.pos, probe.cross, probe.cross_end, probe.size,
+      probe.delta, probe.before, probe.path)
+  else
+    for k = 1, #layers do
+      local tiles = layers[k]
+      -- a layer removed by a filter earlier in this move is skipped (one the filter removes
+      -- now, returning true, is met this once, as a solid is)
+      if world._records[tiles] then
+        local face, count
+        -- LuaJIT shaping: the reach read (tile_face) only in a world of tiles and actors;
+        -- with hashed solids or sensors, the line scan, whose loops end traces. The reach
+        -- read has no loop, so every path through a move compiles on into the rest of the
+        -- move (the hash scan, the sensors, the game's loop) as traces of its own: in the
+        -- world bench's tile scene that is 157 ns per move instead of 263, but with
+        -- solids (make bench-jit's platformer) LuaJIT could not compile the hash scan's side
+        -- traces (20-26 flushes in 3000 frames and 0.5-0.8 ms per frame instead of 4 and
+        -- 0.036), and with sensors (bench/contacts.lua) it needed 2980 traces instead of
+        -- 2481, so that at the default budget its moves took 19400 ns per actor instead of
+        -- 8100 (2026-12-01); with sensors_crossed left to the interpreter, 1611-1811 ns
+        -- instead of 1213-1222 with a budget that never runs out. Both scans give the same
+        -- answer (spec/layer_spec.lua).
+        if solid_count > 0 or world._sensor_count > 0 then
+          face, count = tile_face_scan(tiles, probe)
+        else
+          face, count = tile_face(tiles, probe)
+        end
+        if face then -- the stop there, and its tiles as hits when it is the nearest yet
+          local pos, size, forward = probe.pos, probe.size, probe.forward
+          local stop = face -- (the outcomes sweep.stop_forward / stop_backward give)
+          if forward then stop = face >= pos + size and before(face, size, pos) or pos
+          elseif face > pos then stop = pos end
+          if best == nil or (forward and stop <= best) or (not forward and stop >= best) then
+            if stop ~= best then best = stop; world._n_hits = first_hit end
+            local side
+            if probe.is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
+            local id = world._records[tiles].id
+            local cols, rows = probe.cols, probe.rows
+            local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
+            for c = 1, count do
+              local col, row = cols[c], rows[c]
+              add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
+                tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
+            end
           end
         end
       end
@@ -506,6 +557,24 @@ end
 -- --frames 100`, median of 5, 2026-12-01).
 local function move_axis_sweep(world, actor, dx, dy, filter)
   if filter ~= nil then return move_filtered(world, actor, dx, dy, filter) end
+  if not BRANCH_FREE and world._solid_count == 0 and world._sensor_count == 0 then
+    -- Lua 5.x, tiles alone: straight to layers_stop, without the probe
+    local path = (dx < 0 and -dx or dx) + (dy < 0 and -dy or dy)
+    local x, y = actor.x, actor.y
+    if dx ~= 0 then
+      world._round = 1
+      local width, height = actor.width, actor.height
+      x = layers_stop(world, true, x, y, y + height, width, dx, 0, path) or x + dx
+    end
+    if dy ~= 0 then
+      world._round = 2
+      local width, height = actor.width, actor.height
+      y = layers_stop(world, false, y, x, x + width, height, dy, dx < 0 and -dx or dx, path)
+        or y + dy
+    end
+    actor.x, actor.y = x, y
+    return
+  end
   local probe = world._probe
   -- (no local more than needed: every local here is carried into each side trace of the
   -- phases on LuaJIT, see layer.lua's axis scan)
