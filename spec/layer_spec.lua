@@ -56,6 +56,28 @@ local function probe_for(is_x, forward, pos, size, delta, cross, cross_size)
   return p
 end
 
+-- The three scans' answers for probe p, each against the brute force's; returns the face.
+local function compare(grid, cols, rows, opts, tile_w, tile_h, tiles, p, case)
+  local want, list = brute(grid, cols, rows, opts, tile_w, tile_h, p)
+  local face
+  for _, scan in ipairs({"tile_face", "tile_face_scan", "tile_stop"}) do
+    local count
+    if scan == "tile_stop" then -- (from the probe's inputs; its own output lists)
+      p.cols, p.rows = {}, {}
+      face, count = layer.tile_stop(tiles, p.is_x, p.forward, p.pos, p.size, p.delta,
+        p.cross, p.cross_end, p.cols, p.rows)
+    else
+      face, count = layer[scan](tiles, p)
+    end
+    assert.are.equal(want, face, scan .. ", case " .. case)
+    assert.are.equal(#list, count, scan .. ", case " .. case)
+    for i = 1, count do
+      assert.are.same({list[i][1], list[i][2]}, {p.cols[i], p.rows[i]}, scan .. ", case " .. case)
+    end
+  end
+  return face
+end
+
 describe("budge.layer's axis scan", function()
   it("all three find the face and the tiles on it that a brute force over every tile finds, in "
     .. "40000 random layers and moves (dyadic and non-dyadic origins, oneway tiles, moves "
@@ -73,6 +95,7 @@ describe("budge.layer's axis scan", function()
       end
       local opts = {x = rng(-20, 20) / 4, y = rng(-20, 20) / 4, is_oneway = is_oneway}
       if case % 5 == 0 then opts.x, opts.y = opts.x + 0.3, opts.y - 0.1 end
+      if case % 3 == 0 then opts.x, opts.y = 0, 0 end
       local tile_w, tile_h = rng(1, 5) * 4, rng(1, 5) * 4
       if case % 7 == 0 then tile_w, tile_h = tile_w / 3, tile_h * 0.7 end
       local tiles = layer.new(grid, tile_w, tile_h, opts, 1)
@@ -81,29 +104,47 @@ describe("budge.layer's axis scan", function()
       if case % 11 == 0 then pos = (is_x and opts.x or opts.y) + rng(0, 12) * (is_x and tile_w or tile_h) end
       local delta = (forward and 1 or -1) * rng(1, 200) / 4
       local p = probe_for(is_x, forward, pos, size, delta, rng(-40, 240) / 4, rng(0, 80) / 4)
-      local want, list = brute(grid, cols, rows, opts, tile_w, tile_h, p)
-      local face
-      for _, scan in ipairs({"tile_face", "tile_face_scan", "tile_stop"}) do
-        local count
-        if scan == "tile_stop" then -- (from the probe's inputs; its own output lists)
-          p.cols, p.rows = {}, {}
-          face, count = layer.tile_stop(tiles, p.is_x, p.forward, p.pos, p.size, p.delta,
-            p.cross, p.cross_end, p.cols, p.rows)
-        else
-          face, count = layer[scan](tiles, p)
-        end
-        assert.are.equal(want, face, scan .. ", case " .. case)
-        assert.are.equal(#list, count, scan .. ", case " .. case)
-        for i = 1, count do
-          assert.are.same({list[i][1], list[i][2]}, {p.cols[i], p.rows[i]},
-            scan .. ", case " .. case)
-        end
-      end
+      local face = compare(grid, cols, rows, opts, tile_w, tile_h, tiles, p, case)
       checked = checked + 1
       if face then found = found + 1 end
     end
     assert.are.equal(40000, checked)
     assert.is_true(found > 10000 and found < 30000, "found " .. found) -- (both kinds of case)
+  end)
+
+  it("all three agree with the brute force next to 0 and on tile edges: coordinates that "
+    .. "underflow when divided by a side, sides whose multiples divide back below the count",
+    function()
+    local tiny = {0, -0, 2 ^ -1074, -2 ^ -1074, 2 ^ -1060, -2 ^ -1060, 2 ^ -1020, -2 ^ -1020,
+      2 ^ -1000, 1, -1, 16, -16}
+    local grid = {{1, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 0, 0, 1, 0, 0, 1}, {1, ONEWAY_ID, 1, 0, 0, 1, 0, 0},
+      {0, 0, 0, 1, 0, 0, 0, 1}, {0, 1, 0, 0, 0, 0, 1, 0}, {0, 0, 0, 0, 1, 0, 0, 0},
+      {1, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 1, 0, 0, 1, 0, 0}}
+    local found, checked = 0, 0
+    for _, side in ipairs({16, 2 ^ 40, 0.25, 0.7}) do -- (3 * 0.7 / 0.7 rounds below 3)
+      tiny[14], tiny[15] = 3 * side, 6 * side
+      for _, origin in ipairs({0, -side}) do
+        local opts = {x = origin, y = origin, is_oneway = is_oneway}
+        local tiles = layer.new(grid, side, side, opts, 1)
+        for _, pos in ipairs(tiny) do
+          for _, cross in ipairs(tiny) do
+            for _, size in ipairs({0, side / 2, side}) do
+              for _, is_x in ipairs({true, false}) do
+                for _, delta in ipairs({side, -side, 2 * side, -2 * side}) do
+                  local p = probe_for(is_x, delta > 0, pos, size, delta, cross, size)
+                  if compare(grid, 8, 8, opts, side, side, tiles, p, checked) then
+                    found = found + 1
+                  end
+                  checked = checked + 1
+                end
+              end
+            end
+          end
+        end
+      end
+    end
+    assert.are.equal(4 * 2 * 15 * 15 * 3 * 2 * 4, checked)
+    assert.is_true(found > checked / 4 and found < checked * 3 / 4, "found " .. found)
   end)
 
   it("reads the grid again at world:update: a solid tile and a oneway tile stop moves "
