@@ -127,6 +127,15 @@ local function overlap_ti(x1, y1, w1, h1, x2, y2, w2, h2)
   return min(-min(w1, abs(px)) * min(h1, abs(py)), -SMALLEST), px, py
 end
 
+-- overlap_ti's ti alone, without a branch (LuaJIT: a branch here, deep in a move, is a
+-- side trace carrying every value live in the move, which LuaJIT often cannot compile:
+-- "NYI: register coalescing too complex"): the size of the nearer of the corner's two
+-- sides on each axis is the smaller of their sizes, exactly the same number.
+local function overlap_depth(x1, y1, w1, h1, x2, y2, w2, h2)
+  local x, y, w, h = rect_diff(x1, y1, w1, h1, x2, y2, w2, h2)
+  return min(-min(w1, abs(x), abs(x + w)) * min(h1, abs(y), abs(y + h)), -SMALLEST)
+end
+
 -- Fills `col` (a record with the tables move, normal, touch, itemRect and otherRect) with
 -- what the rectangle (x1, y1, w1, h1) moving to (goal_x, goal_y) meets of (x2, y2, w2,
 -- h2), by budge's rules; returns col, or nil when it meets nothing.
@@ -266,12 +275,12 @@ local ENGINE = {[touch_response] = "touch", [cross_response] = "cross",
 ---@field package _region budge.Record[] what the move's first leg's rectangle overlaps
 ---(_region_n of them; the rectangle _region_left, _top, _right, _bottom)
 ---@field package _own budge.Record the running move's item's record (and _item, _w, _h)
----@field package _leg_x number on LuaJIT, the running leg's start (_leg_x, _leg_y), its
----motion (_leg_dx, _leg_dy), the start's far sides (_leg_x1, _leg_y1) and the rectangle it
----sweeps (_leg_left, _leg_top, _leg_right, _leg_bottom), for nearest to read where it uses
----them (run_leg writes them)
+---@field package _leg_x number the running leg's start (_leg_x, _leg_y), its motion
+---(_leg_dx, _leg_dy), the start's far sides (_leg_x1, _leg_y1) and the rectangle it sweeps
+---(_leg_left, _leg_top, _leg_right, _leg_bottom), for nearest to read where it uses them
+---(run_leg writes them)
 ---@field package _best budge.Record|false|nil on LuaJIT, nearest's best candidate so far
----(nil: none; and _best_t, the leg time it is met at, and _best_axis)
+---(nil: none; and _best_t, the leg time it is met at)
 ---@field package _out table[] the running move's cols list and their pool (_out_pool)
 ---@field package _n integer how many cols it has
 ---@field package _visited_filter function the filter a custom response is given
@@ -400,7 +409,7 @@ function bump.newWorld(cell_size)
     _margin = cell_size / 4, -- how far a moved item's loose cells reach (World:move)
     _leg_x = 0, _leg_y = 0, _leg_dx = 0, _leg_dy = 0, _leg_x1 = 0, _leg_y1 = 0,
     _leg_left = 0, _leg_top = 0, _leg_right = 0, _leg_bottom = 0,
-    _best = false, _best_t = 0, _best_axis = 0, -- (false until the first leg)
+    _best = false, _best_t = 0, -- (false until the first leg)
     _region = {}, _region_n = 0, _region_left = 0, _region_top = 0, _region_right = 0,
     _region_bottom = 0, -- what the move's first leg's rectangle overlaps
     _move_cols = {}, _move_pool = {},
@@ -542,14 +551,24 @@ local function centre_before(b, a, x, y, w, h)
   return db < da or db == da and b.id < a.id
 end
 
--- The candidate `record`, met at leg time `first` (no later than the best so far) across
--- `axis`, becomes the leg's best unless the best so far comes before it.
-local function offer(self, record, first, axis)
+-- The candidate `record`, met at leg time `first` (no later than the best so far),
+-- becomes the leg's best unless the best so far comes before it.
+local function offer(self, record, first)
   if first == self._best_t
     and not centre_before(record, self._best, self._leg_x, self._leg_y, self._w, self._h) then
     return
   end
-  self._best, self._best_t, self._best_axis = record, first, axis
+  self._best, self._best_t = record, first
+end
+
+-- The running leg's times (fractions of it) of reaching and leaving `record` on each
+-- axis: near_x, far_x, near_y, far_y (a division by a negative delta swaps near and far;
+-- by 0, the overlap the rectangle test found makes them -inf and inf: no branch on the
+-- direction).
+local function leg_times(self, record)
+  local rx, ry = record.x, record.y
+  return (rx - self._leg_x1) / self._leg_dx, (rx + record.width - self._leg_x) / self._leg_dx,
+    (ry - self._leg_y1) / self._leg_dy, (ry + record.height - self._leg_y) / self._leg_dy
 end
 
 -- Makes the move's region (see plan_move) hold what the leg's rectangle overlaps: the
@@ -570,7 +589,10 @@ end
 -- form, and overlapping_in_cell's (hash.lua), `lua5.4 bench/world.lua --way bump_boxes
 -- --count 1000 --frames 60` took 6576 ns per move instead of 5321 (5 fresh runs each,
 -- interleaved, 2026-12-01); with this one, 5004 against 4944.
-local function nearest_compared(self, x, y, dx, dy, left, top, right, bottom)
+local function nearest_compared(self)
+  local x, y, dx, dy = self._leg_x, self._leg_y, self._leg_dx, self._leg_dy
+  local left, top, right, bottom = self._leg_left, self._leg_top, self._leg_right,
+    self._leg_bottom
   local w, h = self._w, self._h
   local x1, y1 = x + w, y + h
   local region, pass = self._region, self._pass
@@ -616,36 +638,39 @@ end
 -- could not compile the loop's side exits ("NYI: register coalescing too complex", 1000 to
 -- 4000 aborts a run) and tried again all run long. `luajit bench/world.lua --way
 -- bump_boxes`, 7 fresh runs each, interleaved, 2026-12-01, with overlapping_in_cell's one
--- test (hash.lua): 1000 items 1552 -> 1195 ns per move, 10000 items 3487 -> 3014.
+-- test (hash.lua): 1000 items 1552 -> 1195 ns per move, 10000 items 3487 -> 3014. The
+-- branches left in the loop had the same trouble in some runs (the side traces carry every
+-- value live in the move, in this frame and the callers'), so: the axis is found after the
+-- loop, for the best alone; an overlap's measure is overlap_depth's, with no branch; and
+-- run_leg keeps no local of the leg's live across its loop. 100 items, 10 fresh runs each,
+-- interleaved, 2026-12-02: 0 to 500 of those aborts a run -> none, 880 -> 751 ns per move
+-- (median; runs whose machine code overflows LuaJIT's budget still take 1.2 to 1.7 us).
 local function nearest(self)
   local region = self._region
-  self._best, self._best_t, self._best_axis = nil, HUGE, 0
+  self._best, self._best_t = nil, HUGE
   for i = 1, self._region_n do
     local record = region[i]
     local rx, ry = record.x, record.y
     if min(self._leg_right - rx, rx + record.width - self._leg_left, self._leg_bottom - ry,
       ry + record.height - self._leg_top, self._pass - record._mark) > 0 then
-      -- (a division by a negative delta swaps them; by 0, the overlap makes them -inf
-      -- and inf: no branch on the direction)
-      local near_x = (rx - self._leg_x1) / self._leg_dx
-      local far_x = (rx + record.width - self._leg_x) / self._leg_dx
-      local near_y = (ry - self._leg_y1) / self._leg_dy
-      local far_y = (ry + record.height - self._leg_y) / self._leg_dy
-      local enter_x, enter_y = min(near_x, far_x), min(near_y, far_y)
+      local near_x, far_x, near_y, far_y = leg_times(self, record)
       -- (+ 0: -0 becomes 0, for math.max gives either zero on a tie, by interpreter)
-      local first = max(enter_x, enter_y) + 0
+      local first = max(min(near_x, far_x), min(near_y, far_y)) + 0
       local exit = min(max(near_x, far_x), max(near_y, far_y))
       if min(exit - first, 1 - first, exit) > 0 then
-        local axis = enter_x > enter_y and 1 or 2
         if first < 0 then -- overlapping at the start: bump's negative measure of it
-          first = overlap_ti(self._leg_x, self._leg_y, self._w, self._h, rx, ry, record.width,
-            record.height)
+          first = overlap_depth(self._leg_x, self._leg_y, self._w, self._h, rx, ry,
+            record.width, record.height)
         end
-        if first <= self._best_t then offer(self, record, first, axis) end
+        if first <= self._best_t then offer(self, record, first) end
       end
     end
   end
-  return self._best, self._best_t, self._best_axis
+  local best = self._best
+  if best == nil then return nil, HUGE, 0 end
+  -- the axis it is entered across, for the best alone (the same times again)
+  local near_x, far_x, near_y, far_y = leg_times(self, best)
+  return best, self._best_t, min(near_x, far_x) > min(near_y, far_y) and 1 or 2
 end
 
 -- Fills col for meeting `record` at leg time t (see leg_candidates) on the leg from (x, y)
@@ -751,23 +776,24 @@ end
 -- One leg from (x, y) toward the goal: true and the next leg when something stops it,
 -- false and the goal when nothing does.
 local function run_leg(self, x, y, goal_x, goal_y)
-  local dx, dy = goal_x - x, goal_y - y
-  local w, h = self._w, self._h
   -- LuaJIT shaping: min and max, no branch on the direction (each branch between the
   -- move's loops is a side trace with its own copy of the code up to the next loop)
-  local left, top = min(x, goal_x), min(y, goal_y)
-  local right, bottom = max(x, goal_x) + w, max(y, goal_y) + h
-  cover(self, left, top, right, bottom)
-  self._pass = self._pass + 1 -- (records this leg's filter ignores are marked with it)
-  if BRANCH_FREE then -- (nearest reads them from here)
+  do -- (LuaJIT: none of these locals is live in the loop below, see nearest)
+    local dx, dy = goal_x - x, goal_y - y
+    local w, h = self._w, self._h
+    local left, top = min(x, goal_x), min(y, goal_y)
+    local right, bottom = max(x, goal_x) + w, max(y, goal_y) + h
+    cover(self, left, top, right, bottom)
+    -- (nearest reads them from here)
     self._leg_x, self._leg_y, self._leg_dx, self._leg_dy = x, y, dx, dy
     self._leg_x1, self._leg_y1 = x + w, y + h
     self._leg_left, self._leg_top, self._leg_right, self._leg_bottom = left, top, right, bottom
   end
+  self._pass = self._pass + 1 -- (records this leg's filter ignores are marked with it)
   for _ = 1, self._region_n do -- (each round meets one candidate: at most all of them)
     local other, t, axis
     if BRANCH_FREE then other, t, axis = nearest(self)
-    else other, t, axis = nearest_compared(self, x, y, dx, dy, left, top, right, bottom) end
+    else other, t, axis = nearest_compared(self) end
     if other == nil then break end
     local stop, next_x, next_y, next_goal_x, next_goal_y = meet(self, other, t, axis, x, y,
       goal_x, goal_y)
