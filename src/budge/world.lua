@@ -71,12 +71,10 @@ local world = {}
 ---@field package _mark? number budge.bump's mark: which move met it, or which leg's filter
 ---ignored it (bump.lua, plan_move)
 
--- The solids' hash keeps packed copies of their boxes on LuaJIT only (hash.new says why):
--- on Lua 5.4 the packed scan's reads of the probe cost more than the records' reads save
--- (`lua5.4 bench/world.lua --way merged --count 1000 --frames 60`, 5 fresh runs,
--- 2026-12-01: 3914 ns per move packed, 3850 not), and the copies cost memory. Both scans
--- give the same answers (spec/hash_spec.lua).
-local PACKED = rawget(_G, "jit") ~= nil
+-- The solids' hash keeps packed copies of their boxes (hash.new says why), on every
+-- interpreter since Lua 5.x has a scan of its own over them (hash.lua's
+-- scan_packs_compared). Both scans give the same answers (spec/hash_spec.lua).
+local PACKED = true
 
 ---A world of solids, actors and tile layers. Made by budge.new_world.
 ---@class budge.World
