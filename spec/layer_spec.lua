@@ -147,6 +147,29 @@ describe("budge.layer's axis scan", function()
     assert.is_true(found > checked / 4 and found < checked * 3 / 4, "found " .. found)
   end)
 
+  it("tiles narrower than the rounding at their coordinate: a move gets the same answer on "
+    .. "every interpreter, with a solid in the world (the line scan) and without (the reach "
+    .. "tables, which disagree with it there)", function()
+    local budge = require("budge")
+    local function run(grid, width, dx, with_solid)
+      local world = budge.new_world({cell_size = 2 ^ 16})
+      world:add_tiles(grid, 2 ^ -20, 1, {x = -2 ^ 35 + 0.1, y = 0})
+      if with_solid then world:add_solid({x = 0, y = 0, width = 1, height = 1}) end
+      local actor = world:add_actor({x = -2 ^ 35 + 0.1, y = 0, width = width, height = 1})
+      local x, _, n, hits = world:move(actor, dx, 0)
+      local out = {("%.17g"):format(x), n}
+      for i = 1, n do
+        out[#out + 1] = ("%s %d %.17g"):format(hits[i].side, hits[i].col, hits[i].t)
+      end
+      return out
+    end
+    local one, row = {{0, 1}}, {{1, 0, 1, 0, 1, 1, 0, 1}}
+    assert.are.same({"-34359738357.900002", 0}, run(one, 1, 10, true))
+    assert.are.same({"-34359738367.900002", 1, "right 2 0"}, run(one, 1, 10, false))
+    assert.are.same({"-34359738367.900002", 1, "right 5 0"}, run(row, 2 ^ -16, 0.5, true))
+    assert.are.same({"-34359738367.900002", 1, "right 3 0"}, run(row, 2 ^ -16, 0.5, false))
+  end)
+
   it("reads the grid again at world:update: a solid tile and a oneway tile stop moves "
     .. "once added, and not once gone", function()
     local budge = require("budge")

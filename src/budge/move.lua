@@ -52,8 +52,9 @@ local MAX_STEPS = 4096
 -- narrower than its move); it stops at the last one.
 local MAX_BOUNCES = 16
 local HUGE = math.huge
--- LuaJIT takes phase_stop's shape (the move's values in the probe, tile_face's reads);
--- Lua 5.1-5.4 layers_stop's (positional values, layer.tile_stop): see layers_stop.
+-- In a world of tiles and actors, LuaJIT takes phase_stop's shape (the move's values in
+-- the probe, tile_face's reads) and Lua 5.1-5.4 layers_stop's (positional values,
+-- layer.tile_stop): see layers_stop.
 local BRANCH_FREE = rawget(_G, "jit") ~= nil
 
 local move = {}
@@ -84,13 +85,16 @@ local function hash_phase(world, probe)
   end
 end
 
--- Lua 5.1-5.4's form of phase_stop's layer half (the LuaJIT shaping there is no help on
--- Lua 5.x, and each probe field written and read again costs there): the nearest stop
--- among the tile layers for the box at `pos` (of `size`) on the axis, from `cross` to
--- `cross_end` across it, moving by `delta`, `done` px into a move of `path` px, with its
--- tiles as hits; nil when no tile stops it. The same outcomes as phase_stop's loop
--- (spec/world_spec.lua's catalogue and the bit-identical runs of make test compare them
--- across interpreters).
+-- Lua 5.1-5.4's form of phase_stop's layer half in a world of tiles and actors alone
+-- (move_axis_sweep calls it; the LuaJIT shaping there is no help on Lua 5.x, and each
+-- probe field written and read again costs there): the nearest stop among the tile layers
+-- for the box at `pos` (of `size`) on the axis, from `cross` to `cross_end` across it,
+-- moving by `delta`, `done` px into a move of `path` px, with its tiles as hits; nil when
+-- no tile stops it. The same outcomes as phase_stop's loop with tile_face (the specs run
+-- on every interpreter with the same expected values). With solids or sensors phase_stop
+-- runs on every interpreter: its line scan (tile_face_scan) disagrees with the reach
+-- tables in a layer whose tiles are narrower than the rounding at their coordinate
+-- (spec/layer_spec.lua), and every interpreter must give the same answer.
 -- Speed: `lua5.4 bench/world.lua --way tiles --count 1000 --frames 60`, 3 fresh runs
 -- each, interleaved, 2026-12-02: 2196-2323 ns per move through axis_phase, phase_stop and
 -- tile_face, 1740-1750 through this and layer.tile_stop.
@@ -136,50 +140,45 @@ local function phase_stop(world, probe)
   local first_hit, solid_count = world._n_hits, world._solid_count
   local best
   local layers = world._layers
-  if not BRANCH_FREE then
-    best = layers_stop(world, probe.is_x, probe.pos, probe.cross, probe.cross_end, probe.size,
-      probe.delta, probe.before, probe.path)
-  else
-    for k = 1, #layers do
-      local tiles = layers[k]
-      -- a layer removed by a filter earlier in this move is skipped (one the filter removes
-      -- now, returning true, is met this once, as a solid is)
-      if world._records[tiles] then
-        local face, count
-        -- LuaJIT shaping: the reach read (tile_face) only in a world of tiles and actors;
-        -- with hashed solids or sensors, the line scan, whose loops end traces. The reach
-        -- read has no loop, so every path through a move compiles on into the rest of the
-        -- move (the hash scan, the sensors, the game's loop) as traces of its own: in the
-        -- world bench's tile scene that is 157 ns per move instead of 263, but with
-        -- solids (make bench-jit's platformer) LuaJIT could not compile the hash scan's side
-        -- traces (20-26 flushes in 3000 frames and 0.5-0.8 ms per frame instead of 4 and
-        -- 0.036), and with sensors (bench/contacts.lua) it needed 2980 traces instead of
-        -- 2481, so that at the default budget its moves took 19400 ns per actor instead of
-        -- 8100 (2026-12-01); with sensors_crossed left to the interpreter, 1611-1811 ns
-        -- instead of 1213-1222 with a budget that never runs out. Both scans give the same
-        -- answer (spec/layer_spec.lua).
-        if solid_count > 0 or world._sensor_count > 0 then
-          face, count = tile_face_scan(tiles, probe)
-        else
-          face, count = tile_face(tiles, probe)
-        end
-        if face then -- the stop there, and its tiles as hits when it is the nearest yet
-          local pos, size, forward = probe.pos, probe.size, probe.forward
-          local stop = face -- (the outcomes sweep.stop_forward / stop_backward give)
-          if forward then stop = face >= pos + size and before(face, size, pos) or pos
-          elseif face > pos then stop = pos end
-          if best == nil or (forward and stop <= best) or (not forward and stop >= best) then
-            if stop ~= best then best = stop; world._n_hits = first_hit end
-            local side
-            if probe.is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
-            local id = world._records[tiles].id
-            local cols, rows = probe.cols, probe.rows
-            local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
-            for c = 1, count do
-              local col, row = cols[c], rows[c]
-              add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
-                tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
-            end
+  for k = 1, #layers do
+    local tiles = layers[k]
+    -- a layer removed by a filter earlier in this move is skipped (one the filter removes
+    -- now, returning true, is met this once, as a solid is)
+    if world._records[tiles] then
+      local face, count
+      -- LuaJIT shaping: the reach read (tile_face) only in a world of tiles and actors;
+      -- with hashed solids or sensors, the line scan, whose loops end traces. The reach
+      -- read has no loop, so every path through a move compiles on into the rest of the
+      -- move (the hash scan, the sensors, the game's loop) as traces of its own: in the
+      -- world bench's tile scene that is 157 ns per move instead of 263, but with
+      -- solids (make bench-jit's platformer) LuaJIT could not compile the hash scan's side
+      -- traces (20-26 flushes in 3000 frames and 0.5-0.8 ms per frame instead of 4 and
+      -- 0.036), and with sensors (bench/contacts.lua) it needed 2980 traces instead of
+      -- 2481, so that at the default budget its moves took 19400 ns per actor instead of
+      -- 8100 (2026-12-01); with sensors_crossed left to the interpreter, 1611-1811 ns
+      -- instead of 1213-1222 with a budget that never runs out. Both scans give the same
+      -- answer (spec/layer_spec.lua).
+      if solid_count > 0 or world._sensor_count > 0 then
+        face, count = tile_face_scan(tiles, probe)
+      else
+        face, count = tile_face(tiles, probe)
+      end
+      if face then -- the stop there, and its tiles as hits when it is the nearest yet
+        local pos, size, forward = probe.pos, probe.size, probe.forward
+        local stop = face -- (the outcomes sweep.stop_forward / stop_backward give)
+        if forward then stop = face >= pos + size and before(face, size, pos) or pos
+        elseif face > pos then stop = pos end
+        if best == nil or (forward and stop <= best) or (not forward and stop >= best) then
+          if stop ~= best then best = stop; world._n_hits = first_hit end
+          local side
+          if probe.is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
+          local id = world._records[tiles].id
+          local cols, rows = probe.cols, probe.rows
+          local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
+          for c = 1, count do
+            local col, row = cols[c], rows[c]
+            add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
+              tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
           end
         end
       end
