@@ -115,7 +115,8 @@ describe("budge.layer's axis scan", function()
   it("all three agree with the brute force next to 0 and on tile edges: coordinates that "
     .. "underflow when divided by a side, sides whose multiples divide back below the count",
     function()
-    local tiny = {0, -0, 2 ^ -1074, -2 ^ -1074, 2 ^ -1060, -2 ^ -1060, 2 ^ -1020, -2 ^ -1020,
+    local zero = 0.0 -- (-0 written as a literal is +0 on Lua 5.x: made at run time)
+    local tiny = {0, -zero, 2 ^ -1074, -2 ^ -1074, 2 ^ -1060, -2 ^ -1060, 2 ^ -1020, -2 ^ -1020,
       2 ^ -1000, 1, -1, 16, -16}
     local grid = {{1, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 0, 0, 1, 0, 0, 1}, {1, ONEWAY_ID, 1, 0, 0, 1, 0, 0},
       {0, 0, 0, 1, 0, 0, 0, 1}, {0, 1, 0, 0, 0, 0, 1, 0}, {0, 0, 0, 0, 1, 0, 0, 0},

@@ -91,6 +91,26 @@ describe("world:add_tiles", function()
     assert.same({-4, 1, layer, "floor", 2, 1}, {y, n, hits[1].other, hits[1].side, hits[1].col, hits[1].row})
   end)
 
+  it("times a tile hit by the path before it, x first: a wall in the x phase, a floor in "
+    .. "the y phase, two layers, in a world of tiles alone and with a sensor", function()
+    for _, with_sensor in ipairs({false, true}) do
+      local world = budge.new_world()
+      -- a wall at x = 32 (rows 0-15), a floor at y = 48; a second layer's floor at y = 40
+      world:add_tiles({{0, 0, 1}, {0, 0, 0}, {0, 0, 0}, {1, 1, 1}}, 16, 16)
+      local upper = world:add_tiles({{0, 0, 0, 0, 0, 0}, {0, 0, 1, 0, 0, 0}}, 8, 40, {y = 0})
+      if with_sensor then world:add_sensor(box(200, 200, 4, 4)) end
+      local actor = world:add_actor(box(0, 4, 12, 12))
+      local x, y, n, hits = world:move(actor, 30, 40)
+      -- x: 0 -> 20 (the wall's face at 32), path 30 + 40 = 70: t = 20 / 70; y: the upper
+      -- layer's tile (col 3, x 16-24, its row 2 from y = 40) stops it before the floor at
+      -- 48: 4 -> 28, t = (30 + 24) / 70
+      assert.same({20, 28, 2}, {x, y, n})
+      assert.same({"right", 3, 1, 20 / 70}, {hits[1].side, hits[1].col, hits[1].row, hits[1].t})
+      assert.same({upper, "floor", 3, 2, (30 + 24) / 70},
+        {hits[2].other, hits[2].side, hits[2].col, hits[2].row, hits[2].t})
+    end
+  end)
+
   it("takes 0 as empty by default, as Tiled does, and uses is_oneway when given", function()
     local world = budge.new_world()
     world:add_tiles({{0, 3, 5}}, 10, 10, {

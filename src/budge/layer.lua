@@ -301,8 +301,8 @@ end
 
 -- Lists the tiles on line `line` that stop the box (those whose reach is that line: the
 -- face is `face`) into probe.cols and probe.rows (1-based); returns how many. One or two
--- tiles across are read without a loop on LuaJIT (a loop of one or two turns costs side
--- traces it could not compile: see the axis scan above).
+-- tiles across are read without a loop (on LuaJIT a loop of one or two turns costs side
+-- traces it could not compile: see the axis scan above; Lua 5.x takes tile_stop).
 local function list_line(tiles, probe, line, first, last, face)
   local is_x = probe.is_x
   local reach = tiles._reach

@@ -103,26 +103,24 @@ local function layers_stop(world, is_x, pos, cross, cross_end, size, delta, done
   local layers, probe = world._layers, world._probe
   local cols, rows = probe.cols, probe.rows
   local best
-  for k = 1, #layers do
+  for k = 1, #layers do -- (no callback runs in this move: no layer is removed during it)
     local tiles = layers[k]
-    local record = world._records[tiles] -- (nil: removed by a filter earlier in this move)
-    if record then
-      local face, count = tile_stop(tiles, is_x, forward, pos, size, delta, cross,
-        cross_end, cols, rows)
-      if face then
-        local stop = face
-        if forward then stop = face >= pos + size and before(face, size, pos) or pos
-        elseif face > pos then stop = pos end
-        if best == nil or (forward and stop <= best) or (not forward and stop >= best) then
-          if stop ~= best then best = stop; world._n_hits = first_hit end
-          local side
-          if is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
-          local t = (done + (forward and stop - pos or pos - stop)) / path
-          for c = 1, count do
-            local col, row = cols[c], rows[c]
-            add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
-              tiles.x + (col - 1) * tiles.tile_width, record.id, SLIDE, t)
-          end
+    local face, count = tile_stop(tiles, is_x, forward, pos, size, delta, cross, cross_end,
+      cols, rows)
+    if face then
+      local stop = face
+      if forward then stop = face >= pos + size and before(face, size, pos) or pos
+      elseif face > pos then stop = pos end
+      if best == nil or (forward and stop <= best) or (not forward and stop >= best) then
+        if stop ~= best then best = stop; world._n_hits = first_hit end
+        local side
+        if is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
+        local t = (done + (forward and stop - pos or pos - stop)) / path
+        local id = world._records[tiles].id
+        for c = 1, count do
+          local col, row = cols[c], rows[c]
+          add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
+            tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
         end
       end
     end
@@ -157,7 +155,8 @@ local function phase_stop(world, probe)
       -- 2481, so that at the default budget its moves took 19400 ns per actor instead of
       -- 8100 (2026-12-01); with sensors_crossed left to the interpreter, 1611-1811 ns
       -- instead of 1213-1222 with a budget that never runs out. Both scans give the same
-      -- answer (spec/layer_spec.lua).
+      -- answer (spec/layer_spec.lua), but in a layer whose tiles are narrower than the
+      -- rounding at their coordinate, where several faces round onto one value.
       if solid_count > 0 or world._sensor_count > 0 then
         face, count = tile_face_scan(tiles, probe)
       else
