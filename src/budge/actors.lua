@@ -55,11 +55,12 @@ function actors.remove(world, record)
   record.index = nil
 end
 
----Copies the actor's size into its record after a move, if it is still a size (a filter
----may have changed it during the move; the next move checks it, see World:move).
+---Copies the actor's size (read after a move) into its record, if it is still a size (a
+---filter may have changed it during the move; the next move checks it, see World:move).
 ---@param record budge.Record
-function actors.copy_size(record)
-  local width, height = record.item.width, record.item.height
+---@param width any
+---@param height any
+function actors.copy_size(record, width, height)
   if is_size(width) and is_size(height) then
     record.width, record.height = width, height
   end

@@ -585,20 +585,19 @@ function Hash:axis_stop(x, y, width, height, probe)
     scan_cell(self._all, stamp, probe)
     return
   end
-  if self._packed and BRANCH_FREE then
+  if self._packed then
     local forward = probe.forward
-    local sign = forward and 1 or -1
-    probe.sign, probe.signed_reach = sign, sign * probe.reach
-    probe.signed_pos = forward and probe.pos or -probe.edge
     if probe.is_x then probe.face_slot, probe.cross_slot = forward and 1 or 3, 2
     else probe.face_slot, probe.cross_slot = forward and 2 or 4, 1 end
     probe.scan_cx0, probe.scan_cy0, probe.cell_size = cx0, cy0, size
-    scan_packs(cells, probe, cx0, cy0, columns, count)
-  elseif self._packed then -- (Lua 5.x: what scan_packs_compared and consider_packed read)
-    if probe.is_x then probe.face_slot, probe.cross_slot = probe.forward and 1 or 3, 2
-    else probe.face_slot, probe.cross_slot = probe.forward and 2 or 4, 1 end
-    probe.scan_cx0, probe.scan_cy0, probe.cell_size = cx0, cy0, size
-    scan_packs_compared(cells, probe, cx0, cy0, columns, count)
+    if BRANCH_FREE then
+      local sign = forward and 1 or -1
+      probe.sign, probe.signed_reach = sign, sign * probe.reach
+      probe.signed_pos = forward and probe.pos or -probe.edge
+      scan_packs(cells, probe, cx0, cy0, columns, count)
+    else
+      scan_packs_compared(cells, probe, cx0, cy0, columns, count)
+    end
   else -- (one flat loop over the cells, as in collect; the key is the one insert uses)
     for k = 0, count - 1 do
       local row = floor(k / columns)

@@ -271,8 +271,9 @@ end
 -- used rather than kept in locals, one or two tiles across read without a loop, and
 -- move.lua's axis_phase tail-calling phase_stop.
 
--- This shape is LuaJIT's: Lua 5.1-5.4 answer with layer.tile_stop below, the same
--- arithmetic in one function (there each call costs more than the reads it saves).
+-- This shape is LuaJIT's: in a world of tiles and actors Lua 5.1-5.4 answer with
+-- layer.tile_stop below, the same arithmetic in one function (there each call costs more
+-- than the reads it saves).
 
 -- The first line whose low face is past `at` (`strict`), or at or past it: the line
 -- index, its face checked against `at` itself (the division may round across it).

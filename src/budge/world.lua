@@ -71,10 +71,6 @@ local world = {}
 ---@field package _mark? number budge.bump's mark: which move met it, or which leg's filter
 ---ignored it (bump.lua, plan_move)
 
--- The solids' hash keeps packed copies of their boxes (hash.new says why), on every
--- interpreter since Lua 5.x has a scan of its own over them (hash.lua's
--- scan_packs_compared). Both scans give the same answers (spec/hash_spec.lua).
-local PACKED = true
 
 ---A world of solids, actors and tile layers. Made by budge.new_world.
 ---@class budge.World
@@ -156,7 +152,8 @@ function world.new_world(opts)
   local self = setmetatable({
     cell_size = cell_size, range = range,
     _records = {}, _next_id = 0,
-    _solids = hash.new(cell_size, PACKED), _solid_count = 0, _layers = {},
+    -- (the solids' hash keeps packed copies of their boxes: hash.new says why)
+    _solids = hash.new(cell_size, true), _solid_count = 0, _layers = {},
     _bounds = solids.new_bounds(), _box_bounds = solids.new_bounds(),
     _actors = hash.new(cell_size), _actor_list = {}, _dirty = {}, _n_dirty = 0,
     _sensors = hash.new(cell_size), _sensor_list = {}, _sensor_count = 0,
@@ -442,7 +439,9 @@ function World:move(actor, dx, dy, method)
   if self._n_hits > 1 then hits.sort(self) end
   record.x, record.y = actor.x, actor.y
   local width, height = actor.width, actor.height
-  if width ~= record.width or height ~= record.height then actors.copy_size(record) end
+  if width ~= record.width or height ~= record.height then
+    actors.copy_size(record, width, height)
+  end
   if not record.dirty then actors.moved(self, record) end
   return actor.x, actor.y, self._n_hits, self._hits
 end
