@@ -182,6 +182,68 @@ describe("world:move", function()
     assert.is_nil(hits[1].col)
   end)
 
+  it("gives a move's contacts in the order they happened: x phase first, then by t, top, "
+    .. "left; with one layer, two, and solids, wide boxes and long moves", function()
+    -- the oracle: each hit's phase from its side, the top and left of what it met from the
+    -- tile's col and row or the solid's box; consecutive hits must not be out of order
+    local new_random = require("fixtures.random").new
+    local random = new_random(20261202)
+    local PHASE = {left = 1, right = 1, floor = 2, ceiling = 2}
+    local checked, multi, layered = 0, 0, 0
+    for scene = 1, 240 do
+      local world = budge.new_world()
+      local layers, kinds = {}, scene % 3 -- 0: one layer, 1: two layers, 2: a layer and solids
+      for k = 1, kinds == 1 and 2 or 1 do
+        local grid = {}
+        for row = 1, 12 do
+          grid[row] = {}
+          for col = 1, 12 do grid[row][col] = random() < 0.25 and 1 or 0 end
+        end
+        local size = k == 1 and 16 or 8
+        layers[k] = world:add_tiles(grid, size, size, {x = k == 1 and 0 or 4, y = 0})
+      end
+      local tile_origin = {}
+      for k = 1, #layers do tile_origin[layers[k]] = layers[k] end
+      if kinds == 2 then
+        for _ = 1, 6 do
+          world:add_solid(box(random(0, 180), random(0, 180), random(4, 30), random(4, 30)))
+        end
+      end
+      for _ = 1, 20 do
+        local actor = box(random(0, 180), random(0, 180), random(4, 40), random(4, 40))
+        world:add_actor(actor)
+        local _, _, n, hits = world:move(actor, random(-40, 40), random(-40, 40))
+        local function key(hit)
+          local tiles = tile_origin[hit.other]
+          local top, left = hit.other.y, hit.other.x
+          if tiles then
+            top = tiles.y + (hit.row - 1) * tiles.tile_height
+            left = tiles.x + (hit.col - 1) * tiles.tile_width
+          end
+          return PHASE[hit.side], hit.t, top, left
+        end
+        for i = 2, n do
+          local p1, t1, top1, left1 = key(hits[i - 1])
+          local p2, t2, top2, left2 = key(hits[i])
+          local in_order = p1 < p2 or (p1 == p2 and (t1 < t2 or (t1 == t2 and (top1 < top2
+            or (top1 == top2 and left1 <= left2)))))
+          assert(in_order, ("scene %d: hit %d (phase %d, t %.17g, top %.17g, left %.17g) "
+            .. "after (phase %d, t %.17g, top %.17g, left %.17g)"):format(scene, i, p2, t2,
+            top2, left2, p1, t1, top1, left1))
+          checked = checked + 1
+          if kinds == 0 and p1 == p2 then layered = layered + 1 end
+        end
+        if n > 2 then multi = multi + 1 end
+        world:remove(actor)
+      end
+    end
+    -- the scenes are not empty of what they test: pairs of hits in one phase of a one-layer
+    -- move, and moves with more than two contacts
+    assert.is_true(checked > 1000 and layered > 200 and multi > 100,
+      ("%d pairs checked, %d in one phase of one layer, %d moves with 3+ hits"):format(checked,
+        layered, multi))
+  end)
+
   it("reuses its contact records instead of allocating new ones", function()
     local world = budge.new_world()
     world:add_solid(box(0, 100, 200, 16))

@@ -30,6 +30,7 @@ local hits = {}
 local RESPONSE = {slide = "slide", touch = "touch", bounce = "bounce", cross = "cross"}
 RESPONSE[true] = "slide"
 hits.SLIDE, hits.TOUCH, hits.BOUNCE, hits.CROSS = "slide", "touch", "bounce", "cross"
+local SLIDE = hits.SLIDE
 
 -- The normal of the face each side of the actor meets: read from a hit's side when the
 -- game asks for hit.nx or hit.ny.
@@ -65,6 +66,15 @@ function hits.response(value, other)
   return response
 end
 
+---A new list of hit records, with room for a few contacts already made (hits.add_tiles
+---writes two at a time).
+---@return budge.Hit[]
+function hits.new_list()
+  local list = {}
+  for i = 1, 8 do list[i] = setmetatable({}, Hit) end
+  return list
+end
+
 ---Appends a contact with `other` (a box, or a tile layer with the tile's col and row) to
 ---the world's hits, in the world's current round; `top` and `left` are the corner of
 ---what was met (the box's, or the tile's), its sort keys after `t`.
@@ -94,6 +104,43 @@ function hits.add(world, other, side, col, row, top, left, id, response, t)
   hit._top, hit._left = top, left
   hit._id, hit._round = id, world._round
   world._n_hits = n
+end
+
+---Appends the `count` tiles of `tiles` listed in cols and rows (1-based) as "slide"
+---contacts on `side` at time t.
+---LuaJIT shaping: one or two tiles (a box at most two tiles across) are written without
+---a loop or a branch: both records are filled (the second is left past the end when
+---count is 1), so that a move's trace does not fork on how many tiles it met.
+---@param world budge.World
+---@param tiles budge.TileLayer
+---@param side "floor"|"ceiling"|"left"|"right"
+---@param cols integer[] at least two entries, numbers
+---@param rows integer[]
+---@param count integer
+---@param t number
+function hits.add_tiles(world, tiles, side, cols, rows, count, t)
+  local id, round = world._records[tiles].id, world._round
+  local n = world._n_hits
+  local list = world._hits
+  if count > 2 or list[n + 2] == nil then
+    for c = 1, count do
+      local col, row = cols[c], rows[c]
+      hits.add(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
+        tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
+    end
+    return
+  end
+  local hit, col, row = list[n + 1], cols[1], rows[1]
+  hit.other, hit.side, hit.col, hit.row, hit.response, hit.t = tiles, side, col, row, SLIDE, t
+  hit._top, hit._left = tiles.y + (row - 1) * tiles.tile_height,
+    tiles.x + (col - 1) * tiles.tile_width
+  hit._id, hit._round = id, round
+  hit, col, row = list[n + 2], cols[2], rows[2]
+  hit.other, hit.side, hit.col, hit.row, hit.response, hit.t = tiles, side, col, row, SLIDE, t
+  hit._top, hit._left = tiles.y + (row - 1) * tiles.tile_height,
+    tiles.x + (col - 1) * tiles.tile_width
+  hit._id, hit._round = id, round
+  world._n_hits = n + count
 end
 
 -- Contacts of one move come out in the order they happened: by t; at the same t, by the

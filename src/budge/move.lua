@@ -36,7 +36,7 @@ local gather_sensors, gather_all = solids.gather_sensors, solids.gather_all
 local response_of = hits.response
 local stop_forward, stop_backward, box_enter = sweep.stop_forward, sweep.stop_backward,
   sweep.box_enter
-local add_hit, has_tile = hits.add, hits.has_tile
+local add_hit, has_tile, add_tile_hits = hits.add, hits.has_tile, hits.add_tiles
 local SLIDE, TOUCH, BOUNCE, CROSS = hits.SLIDE, hits.TOUCH, hits.BOUNCE, hits.CROSS
 local RULES, oneway_rule, resolve_pair = resolve.RULES, resolve.oneway, fatcross.resolve_pair
 local ceil, floor, sort, format = math.ceil, math.floor, table.sort, string.format
@@ -113,19 +113,36 @@ local function layers_stop(world, is_x, pos, cross, cross_end, size, delta, done
       cols, rows)
     if face then
       local stop = face
-      if forward then stop = face >= pos + size and before(face, size, pos) or pos
+      if forward then
+        if face >= pos + size then
+          stop = face - size -- (sweep.before's answer when the subtraction is exact)
+          if stop + size > face or stop < pos then stop = before(face, size, pos) end
+        else stop = pos end
       elseif face > pos then stop = pos end
       if best == nil or (forward and stop <= best) or (not forward and stop >= best) then
         if stop ~= best then best = stop; world._n_hits = first_hit end
         local side
         if is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
         local t = (done + (forward and stop - pos or pos - stop)) / path
-        local id = world._records[tiles].id
-        for c = 1, count do
+        local id, round = world._records[tiles].id, world._round
+        local list, n = world._hits, world._n_hits
+        local left, top, tile_width, tile_height = tiles.x, tiles.y, tiles.tile_width,
+          tiles.tile_height
+        for c = 1, count do -- (hits.add written out)
           local col, row = cols[c], rows[c]
-          add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
-            tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
+          local hit = list[n + c]
+          if hit == nil then
+            world._n_hits = n + c - 1
+            add_hit(world, tiles, side, col, row, top + (row - 1) * tile_height,
+              left + (col - 1) * tile_width, id, SLIDE, t)
+          else
+            hit.other, hit.side, hit.col, hit.row, hit.response, hit.t = tiles, side, col, row,
+              SLIDE, t
+            hit._top, hit._left = top + (row - 1) * tile_height, left + (col - 1) * tile_width
+            hit._id, hit._round = id, round
+          end
         end
+        world._n_hits = n + count
       end
     end
   end
@@ -175,14 +192,8 @@ local function phase_stop(world, probe)
           if stop ~= best then best = stop; world._n_hits = first_hit end
           local side
           if probe.is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
-          local id = world._records[tiles].id
-          local cols, rows = probe.cols, probe.rows
           local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
-          for c = 1, count do
-            local col, row = cols[c], rows[c]
-            add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
-              tiles.x + (col - 1) * tiles.tile_width, id, SLIDE, t)
-          end
+          add_tile_hits(world, tiles, side, probe.cols, probe.rows, count, t)
         end
       end
     end
@@ -553,6 +564,10 @@ do
   end
 end
 
+-- Returns true when the move's hits are already in the order they happened (hits.sort's
+-- order), so that the world need not sort them: with no filter, no solid, no sensor and
+-- one layer, each phase's hits are one line of tiles listed from the low side across,
+-- and the x phase's come first.
 -- Speed: with no filter, the two phases are called straight from here and the contacts'
 -- times written only when there are contacts: through run_phase, the world bench's tile
 -- moves took 2540 ns instead of 2237 on Lua 5.4 (`lua5.4 bench/world.lua --profile tiles
@@ -575,7 +590,7 @@ local function move_axis_sweep(world, actor, dx, dy, filter)
         or y + dy
     end
     actor.x, actor.y = x, y
-    return
+    return #world._layers < 2
   end
   local probe = world._probe
   -- (no local more than needed: every local here is carried into each side trace of the
@@ -593,8 +608,11 @@ local function move_axis_sweep(world, actor, dx, dy, filter)
   end
   if world._sensor_count > 0 then
     sensors_crossed(world, actor, actor.x, actor.y, x, y, dx, dy, probe.path)
+    actor.x, actor.y = x, y
+    return false
   end
   actor.x, actor.y = x, y
+  return world._solid_count == 0 and #world._layers < 2
 end
 
 -- swept ------------------------------------------------------------------------------

@@ -157,7 +157,7 @@ function world.new_world(opts)
     _bounds = solids.new_bounds(), _box_bounds = solids.new_bounds(),
     _actors = hash.new(cell_size), _actor_list = {}, _dirty = {}, _n_dirty = 0,
     _sensors = hash.new(cell_size), _sensor_list = {}, _sensor_count = 0,
-    _hits = {}, _n_hits = 0, _check_hits = {}, _round = 0, _move_stamp = 0,
+    _hits = hits.new_list(), _n_hits = 0, _check_hits = hits.new_list(), _round = 0, _move_stamp = 0,
     _probe = sweep.new_probe(),
     _set = set, _cross = sweep.new_set(), _crossed = {}, _candidate_before = move.candidate_order(set), _order = {},
     _scratch = {x = 0, y = 0, width = 0, height = 0},
@@ -430,13 +430,14 @@ function World:move(actor, dx, dy, method)
     check_move(self, actor, dx, dy, method) -- (raises the error)
   end
   self._n_hits = 0
+  local in_order = false
   if filter == nil then -- no callback can run: nothing to guard
-    method_entry.move(self, actor, dx, dy, nil, method_entry)
+    in_order = method_entry.move(self, actor, dx, dy, nil, method_entry)
   else
     guarded(self, "an actor's filter", 2, method_entry.move, abandon_move, actor, dx, dy,
       filter, method_entry)
   end
-  if self._n_hits > 1 then hits.sort(self) end
+  if self._n_hits > 1 and not in_order then hits.sort(self) end
   record.x, record.y = actor.x, actor.y
   local width, height = actor.width, actor.height
   if width ~= record.width or height ~= record.height then
