@@ -128,7 +128,7 @@ local function layers_stop(world, is_x, pos, cross, cross_end, size, delta, done
         local list, n = world._hits, world._n_hits
         local left, top, tile_width, tile_height = tiles.x, tiles.y, tiles.tile_width,
           tiles.tile_height
-        for c = 1, count do -- (hits.add written out)
+        for c = 1, count do -- (hits.add written out: a call less per tile met)
           local col, row = cols[c], rows[c]
           local hit = list[n + c]
           if hit == nil then
@@ -567,7 +567,8 @@ end
 -- Returns true when the move's hits are already in the order they happened (hits.sort's
 -- order), so that the world need not sort them: with no filter, no solid, no sensor and
 -- one layer, each phase's hits are one line of tiles listed from the low side across,
--- and the x phase's come first.
+-- and the x phase's come first (spec/world_spec.lua checks the order against an oracle).
+-- The sort's loop is a trace exit on LuaJIT and a call per hit on Lua 5.x.
 -- Speed: with no filter, the two phases are called straight from here and the contacts'
 -- times written only when there are contacts: through run_phase, the world bench's tile
 -- moves took 2540 ns instead of 2237 on Lua 5.4 (`lua5.4 bench/world.lua --profile tiles
