@@ -157,6 +157,33 @@ describe("world:add_tiles", function()
     end
   end)
 
+  it("counts contacts in integers on Lua 5.3+ whatever form the grid has", function()
+    -- a flat or Tiled grid's rows are count / cols, a float on Lua 5.3+; a width may be
+    -- given as 4.0: neither may turn the layer's sizes or a move's hit count into floats
+    -- (a solid elsewhere makes the move take the line scan, as in a game)
+    local ids = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1}
+    for _, case in ipairs({
+      {{{0, 0, 0, 0}, {0, 0, 0, 0}, {1, 1, 1, 1}}},
+      {ids, {width = 4}},
+      {ids, {width = 4.0}},
+      {{width = 4, data = ids}},
+      {{width = 4.0, height = 3.0, data = ids}},
+    }) do
+      for _, with_solid in ipairs({false, true}) do
+        local world = budge.new_world()
+        local layer = world:add_tiles(case[1], 16, 16, case[2])
+        if with_solid then world:add_solid(box(500, 500, 10, 10)) end
+        local actor = world:add_actor(box(8, 0, 16, 16))
+        local _, y, n, hits = world:move(actor, 0, 40)
+        local _, _, n_check = world:check(actor, 0, 5)
+        local found = {y, tostring(n), tostring(n_check), tostring(layer.cols),
+          tostring(layer.rows), tostring(hits[1].row), tostring(hits[1].col),
+          tostring(hits[2].col)}
+        assert.same({16, "2", "2", "4", "3", "3", "1", "2"}, found)
+      end
+    end
+  end)
+
   it("rereads its grid on update", function()
     local world = budge.new_world()
     local grid = {{false}}

@@ -7,7 +7,7 @@
 local here = (...):match("^(.*)%.[^%.]+$")
 local box = require(here .. ".box")
 
-local format, error, type, ipairs = string.format, error, type, ipairs
+local format, error, type, ipairs, floor = string.format, error, type, ipairs, math.floor
 local describe, is_finite = box.describe, box.is_finite
 
 local tilegrid = {}
@@ -185,7 +185,9 @@ function tilegrid.measure(source, width, level)
     rows = count / cols
   end
   check_size(cols, rows, level + 1)
-  return data, cols, rows
+  -- whole numbers as integers on Lua 5.3+ (count / cols is a float there, and so is a
+  -- width given as 4.0): a layer's indices, reach tables and hit counts stay integers
+  return data, floor(cols), floor(rows)
 end
 
 ---Reads the ids of a measured grid into `kinds` (EMPTY, SOLID or ONEWAY at
