@@ -106,6 +106,14 @@ function hits.add(world, other, side, col, row, top, left, id, response, t)
   world._n_hits = n
 end
 
+-- Writes tile (col, row) of `tiles` into `hit` as a "slide" contact (hits.add's fields).
+local function fill_tile(hit, tiles, side, col, row, id, round, t)
+  hit.other, hit.side, hit.col, hit.row, hit.response, hit.t = tiles, side, col, row, SLIDE, t
+  hit._top, hit._left = tiles.y + (row - 1) * tiles.tile_height,
+    tiles.x + (col - 1) * tiles.tile_width
+  hit._id, hit._round = id, round
+end
+
 ---Appends the `count` tiles of `tiles` listed in cols and rows (1-based) as "slide"
 ---contacts on `side` at time t.
 ---LuaJIT shaping: one or two tiles (a box at most two tiles across) are written without
@@ -124,10 +132,10 @@ end
 ---@param count integer
 ---@param t number
 function hits.add_tiles(world, tiles, side, cols, rows, count, t)
-  local id, round = world._records[tiles].id, world._round
   local n = world._n_hits
   local list = world._hits
   if count > 2 or list[n + 2] == nil then
+    local id = world._records[tiles].id
     for c = 1, count do
       local col, row = cols[c], rows[c]
       hits.add(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
@@ -135,16 +143,9 @@ function hits.add_tiles(world, tiles, side, cols, rows, count, t)
     end
     return
   end
-  local hit, col, row = list[n + 1], cols[1], rows[1]
-  hit.other, hit.side, hit.col, hit.row, hit.response, hit.t = tiles, side, col, row, SLIDE, t
-  hit._top, hit._left = tiles.y + (row - 1) * tiles.tile_height,
-    tiles.x + (col - 1) * tiles.tile_width
-  hit._id, hit._round = id, round
-  hit, col, row = list[n + 2], cols[2], rows[2]
-  hit.other, hit.side, hit.col, hit.row, hit.response, hit.t = tiles, side, col, row, SLIDE, t
-  hit._top, hit._left = tiles.y + (row - 1) * tiles.tile_height,
-    tiles.x + (col - 1) * tiles.tile_width
-  hit._id, hit._round = id, round
+  local id, round = world._records[tiles].id, world._round
+  fill_tile(list[n + 1], tiles, side, cols[1], rows[1], id, round, t)
+  fill_tile(list[n + 2], tiles, side, cols[2], rows[2], id, round, t)
   world._n_hits = n + count
 end
 

@@ -113,11 +113,7 @@ local function layers_stop(world, is_x, pos, cross, cross_end, size, delta, done
       cols, rows)
     if face then
       local stop = face
-      if forward then
-        if face >= pos + size then
-          stop = face - size -- (sweep.before's answer when the subtraction is exact)
-          if stop + size > face or stop < pos then stop = before(face, size, pos) end
-        else stop = pos end
+      if forward then stop = face >= pos + size and before(face, size, pos) or pos
       elseif face > pos then stop = pos end
       if best == nil or (forward and stop <= best) or (not forward and stop >= best) then
         if stop ~= best then best = stop; world._n_hits = first_hit end
@@ -591,7 +587,7 @@ local function move_axis_sweep(world, actor, dx, dy, filter)
         or y + dy
     end
     actor.x, actor.y = x, y
-    return #world._layers < 2
+    return #world._layers < 2 -- (no solid and no sensor on this path)
   end
   local probe = world._probe
   -- (no local more than needed: every local here is carried into each side trace of the
@@ -609,11 +605,9 @@ local function move_axis_sweep(world, actor, dx, dy, filter)
   end
   if world._sensor_count > 0 then
     sensors_crossed(world, actor, actor.x, actor.y, x, y, dx, dy, probe.path)
-    actor.x, actor.y = x, y
-    return false
   end
   actor.x, actor.y = x, y
-  return world._solid_count == 0 and #world._layers < 2
+  return world._solid_count == 0 and world._sensor_count == 0 and #world._layers < 2
 end
 
 -- swept ------------------------------------------------------------------------------
