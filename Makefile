@@ -70,4 +70,4 @@ game:
 # How much machine code budge makes LuaJIT compile, against its default budget.
 bench-jit:
 	@sh tools/deps.sh luajit
-	luajit bench/jit.lua --frames 3000 --why 8 --readme README.md
+	luajit bench/jit.lua --frames 3000 --runs 5 --why 8 --readme README.md

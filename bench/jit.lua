@@ -1,13 +1,16 @@
 -- bench/jit.lua: how much compiled code budge makes LuaJIT produce, and whether it fits
 -- LuaJIT's default budget (1000 traces, 512 KB of machine code). LuaJIT only.
 --
---   luajit bench/jit.lua [--frames 3000]
+--   luajit bench/jit.lua [--frames 3000] [--runs 5] [--why N] [--readme README.md]
 --
 -- Two scenes: the platformer level (fixtures/levels.lua) with 7 runners that run and jump
--- and 2 moving platforms, and the world bench's crowd of 1000 actors. Each runs twice in
--- a fresh process state: once with the default budget, counting flushes (LuaJIT throws
--- every trace away when the budget runs out) and aborted traces; once with a budget too
--- big to run out, reporting how many traces and how much machine code the scene needs.
+-- and 2 moving platforms, and the world bench's crowd of 1000 actors. Each runs twice:
+-- once with the default budget, counting flushes (LuaJIT throws every trace away when the
+-- budget runs out) and aborted traces; once with a budget too big to run out, reporting
+-- how many traces and how much machine code the scene needs. Each scene and budget runs
+-- in its own fresh process (`--scene S --budget B` is one such run), `--runs` times, the
+-- four interleaved; the medians are printed with their range (what LuaJIT compiles varies
+-- from run to run), and --why N lists the N most frequent abort reasons over the runs.
 package.path = "./src/?.lua;./src/?/init.lua;./?.lua;" .. package.path
 local jit = rawget(_G, "jit")
 if not jit then
@@ -20,7 +23,8 @@ local levels = require("fixtures.levels")
 local runner_logic = require("examples.demo.runner")
 local scene = require("fixtures.scene")
 
-local options = common.options(arg, {frames = 3000, why = 0, readme = ""})
+local options = common.options(arg, {frames = 3000, why = 0, readme = "", runs = 5, scene = "",
+  budget = "default"})
 local vmdef = require("jit.vmdef")
 
 -- "file:line: reason" for an aborted trace, as luajit -jv words it.
@@ -117,31 +121,75 @@ local function run(make, frames, budget)
     ms_per_frame = seconds * 1000 / frames, reasons = reasons}
 end
 
-print(("budge JIT budget on %s, %s; %d frames per scene"):format(common.interpreter(),
-  common.machine(), options.frames))
-local lines = {("`luajit bench/jit.lua --frames %d`, %s, on %s, %s: one run (identical runs "
-  .. "vary by about 20%%: what LuaJIT compiles depends on timing)."):format(options.frames,
-  os.date("!%Y-%m-%d"), common.interpreter(), common.machine()), "",
-  "| scene | budget | flushes | aborts | traces | KB of machine code | ms/frame |",
-  "|---|---|---|---|---|---|---|"}
-print(("%-11s %-8s %8s %8s %8s %10s %12s"):format("scene", "budget", "flushes", "aborts",
-  "traces", "mcode KB", "ms/frame"))
-for _, entry in ipairs({{"platformer", platformer}, {"crowd", crowd}}) do
-  for _, budget in ipairs({"default", "large"}) do
-    local result = run(entry[2], options.frames, budget)
-    print(("%-11s %-8s %8d %8d %8d %10.0f %12.3f"):format(entry[1], budget, result.flushes,
-      result.aborts, result.traces, result.kb, result.ms_per_frame))
-    lines[#lines + 1] = ("| %s | %s | %d | %d | %d | %.0f | %.3f |"):format(entry[1], budget,
-      result.flushes, result.aborts, result.traces, result.kb, result.ms_per_frame)
-    if options.why > 0 then -- the most frequent abort reasons
-      local list = {}
-      for reason, count in pairs(result.reasons) do list[#list + 1] = {reason, count} end
-      table.sort(list, function(a, b) return a[2] > b[2] or (a[2] == b[2] and a[1] < b[1]) end)
-      for i = 1, math.min(options.why, #list) do
-        print(("    %5d  %s"):format(list[i][2], list[i][1]))
-      end
+local SCENES = {platformer = platformer, crowd = crowd}
+local unpack_list = rawget(table, "unpack") or rawget(_G, "unpack")
+
+if options.scene ~= "" then -- one configuration in this fresh process: its figures on a line
+  local result = run(SCENES[options.scene], options.frames, options.budget)
+  local list = {}
+  for reason, count in pairs(result.reasons) do list[#list + 1] = {reason, count} end
+  table.sort(list, function(a, b) return a[2] > b[2] or (a[2] == b[2] and a[1] < b[1]) end)
+  local why = {}
+  for i = 1, math.min(options.why, #list) do
+    why[#why + 1] = ("%d=%s"):format(list[i][2], list[i][1]:gsub("[%s;]", "_"))
+  end
+  print(("%d %d %d %.1f %.4f %s"):format(result.flushes, result.aborts, result.traces, result.kb,
+    result.ms_per_frame, table.concat(why, ";")))
+  os.exit(0)
+end
+
+-- The driver: each scene and budget in its own fresh process (what one configuration
+-- compiles would change another's figures), the configurations interleaved, medians.
+local CONFIGS = {"platformer default", "platformer large", "crowd default", "crowd large"}
+local figures, reasons = {}, {}
+for _ = 1, options.runs do
+  for _, config in ipairs(CONFIGS) do
+    local name, budget = config:match("^(%S+) (%S+)$")
+    local command = ("%s bench/jit.lua --scene %s --budget %s --frames %d --why %d"):format(
+      arg[-1] or "luajit", name, budget, options.frames, options.why)
+    local pipe = assert(io.popen(command))
+    local line = pipe:read("*l") or ""
+    pipe:close()
+    local values = {line:match("^(%S+) (%S+) (%S+) (%S+) (%S+) ?(.*)$")}
+    assert(#values == 6, "no figures from: " .. command)
+    figures[config] = figures[config] or {{}, {}, {}, {}, {}}
+    for k = 1, 5 do table.insert(figures[config][k], tonumber(values[k])) end
+    reasons[config] = reasons[config] or {}
+    for count, reason in values[6]:gmatch("(%d+)=([^;]+)") do
+      reasons[config][reason] = (reasons[config][reason] or 0) + tonumber(count)
     end
   end
 end
-jit.opt.start("maxtrace=1000", "maxmcode=512")
+
+local function spread(values, format)
+  local low, high = math.huge, -math.huge
+  for _, value in ipairs(values) do low, high = math.min(low, value), math.max(high, value) end
+  return (format .. " (" .. format .. "-" .. format .. ")"):format(common.median(values), low, high)
+end
+print(("budge JIT budget on %s, %s; %d frames per scene; medians of %d fresh processes"):format(
+  common.interpreter(), common.machine(), options.frames, options.runs))
+local lines = {("`luajit bench/jit.lua --frames %d --runs %d`, %s, on %s, %s: each scene and "
+  .. "budget in its own fresh process, interleaved; the median of %d runs, their range in "
+  .. "brackets (what LuaJIT compiles varies from run to run)."):format(options.frames,
+  options.runs, os.date("!%Y-%m-%d"), common.interpreter(), common.machine(), options.runs), "",
+  "| scene | budget | flushes | aborts | traces | KB of machine code | ms/frame |",
+  "|---|---|---|---|---|---|---|"}
+print(("%-11s %-8s %12s %16s %16s %18s %24s"):format("scene", "budget", "flushes", "aborts",
+  "traces", "mcode KB", "ms/frame"))
+for _, config in ipairs(CONFIGS) do
+  local name, budget = config:match("^(%S+) (%S+)$")
+  local f = figures[config]
+  local cells = {spread(f[1], "%g"), spread(f[2], "%g"), spread(f[3], "%g"), spread(f[4], "%.0f"),
+    spread(f[5], "%.3f")}
+  print(("%-11s %-8s %12s %16s %16s %18s %24s"):format(name, budget, unpack_list(cells)))
+  lines[#lines + 1] = ("| %s | %s | %s |"):format(name, budget, table.concat(cells, " | "))
+  if options.why > 0 then -- the most frequent abort reasons, summed over the runs
+    local list = {}
+    for reason, count in pairs(reasons[config]) do list[#list + 1] = {reason, count} end
+    table.sort(list, function(a, b) return a[2] > b[2] or (a[2] == b[2] and a[1] < b[1]) end)
+    for i = 1, math.min(options.why, #list) do
+      print(("    %5d  %s"):format(list[i][2], list[i][1]:gsub("_", " ")))
+    end
+  end
+end
 if options.readme ~= "" then common.write_readme(options.readme, "bench/jit.lua", lines) end
