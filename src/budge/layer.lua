@@ -267,37 +267,111 @@ end
 -- at a branch, in this function and in every caller up to the game's loop, is carried
 -- into the branch's side trace, and with a dozen numbers there LuaJIT cannot compile the
 -- side trace at all ("NYI: register coalescing too complex", thousands of aborts per run
--- of the world bench before this shape). Hence the layer's fields read where they are
--- used rather than kept in locals, one or two tiles across read without a loop, and
--- move.lua's axis_phase tail-calling phase_stop.
+-- of the world bench before this shape). Hence tile_line below decides without a branch
+-- whether a tile stops the box and which line (its callers branch on the answer, where
+-- few values are live), one or two tiles across are read without a loop, and the tiles
+-- on the line are listed by list_line, apart.
 
 -- This shape is LuaJIT's: in a world of tiles and actors Lua 5.1-5.4 answer with
--- layer.tile_stop below, the same arithmetic in one function (there each call costs more
--- than the reads it saves).
+-- layer.tile_stop below, the same arithmetic in one function with comparisons (there
+-- each call, even to math.min, costs more than a branch).
 
--- The first line whose low face is past `at` (`strict`), or at or past it: the line
--- index, its face checked against `at` itself (the division may round across it).
-local function ahead(origin, tile, inverse, at, strict)
-  local j = ceil((at - origin) * inverse)
-  local near = origin + j * tile
-  if near < at or (strict and near == at) then j = j + 1
+---The line of tiles (0-based) the box at `pos` (of `size`) on the axis meets first when
+---it moves by `delta` (`forward`: delta > 0), among the tiles across it from `cross` to
+---`cross_end`: its face, 1 (or 0 when no tile stops the box: the other values are then
+---meaningless), the line, and the tiles first..last (0-based) across. The same answer as
+---tile_stop's, decided without a branch: for finite numbers b - a > 0 exactly when a < b,
+---so ceil(min(max(b - a, 0), 1)) is 1 when a < b and 0 otherwise; the tile indices are
+---clamped into the layer for the reads and a factor of the answer says whether they were
+---in it. What branches: the direction, a box more than two tiles across, oneway tiles, and
+---a division rounding across a tile edge.
+---LuaJIT shaping: with the decisions as branches (the line ahead, a tile met or not), the
+---world bench's tile moves took 186 ns instead of 168 (`luajit bench/world.lua --profile
+---tiles`, 11 runs each, interleaved, 2026-12-02).
+---@param tiles budge.TileLayer
+---@param is_x boolean
+---@param forward boolean
+---@param pos number
+---@param size number
+---@param delta number
+---@param cross number
+---@param cross_end number
+---@return number face, integer hit, integer line, integer first, integer last
+function layer.tile_line(tiles, is_x, forward, pos, size, delta, cross, cross_end)
+  local origin, tile, inverse, count, stride, cross_stride, first, last
+  if is_x then
+    origin, tile, inverse, count, stride, cross_stride = tiles.x, tiles.tile_width,
+      tiles._inverse_width, tiles.cols, 1, tiles.cols
+    first, last = span(tiles.y, tiles.tile_height, tiles._inverse_height, tiles.rows, cross,
+      cross_end)
   else
-    near = origin + (j - 1) * tile
-    if near > at or (not strict and near == at) then j = j - 1 end
+    origin, tile, inverse, count, stride, cross_stride = tiles.y, tiles.tile_height,
+      tiles._inverse_height, tiles.rows, tiles.cols, 1
+    first, last = span(tiles.x, tiles.tile_width, tiles._inverse_width, tiles.cols, cross,
+      cross_end)
   end
-  return j
-end
-
--- The last line whose high face is before `at` (`strict`), or at or before it.
-local function behind(origin, tile, inverse, at, strict)
-  local j = floor((at - origin) * inverse) - 1
-  local high = origin + (j + 1) * tile
-  if high > at or (strict and high == at) then j = j - 1
+  local hit = min(max(last - first + 1, 0), 1) -- (0: no tile across the box)
+  local count_across = is_x and tiles.rows or tiles.cols
+  first = min(first, count_across - 1)
+  last = max(last, first)
+  local edge = pos + size
+  local reach = tiles._reach
+  local line, face
+  if forward then
+    -- the first line whose low face is past pos (a box of size 0: at or past it)
+    local j = ceil((pos - origin) * inverse)
+    if pos < edge then
+      j = j + 1 - ceil(min(max(origin + j * tile - pos, 0), 1))
+        - ceil(min(max(origin + (j - 1) * tile - pos, 0), 1))
+    else
+      j = j + ceil(min(max(pos - (origin + j * tile), 0), 1))
+        - 1 + ceil(min(max(pos - (origin + (j - 1) * tile), 0), 1))
+    end
+    j = max(j, 0)
+    hit = hit * min(max(count - j, 0), 1)
+    j = min(j, count - 1)
+    local at, step = (j * stride + first * cross_stride) * 4 + (is_x and RIGHT or DOWN),
+      cross_stride * 4
+    line = min(reach[at], reach[at + (last - first) * step])
+    for i = 1, last - first - 1 do line = min(line, reach[at + i * step]) end
+    local down_any = tiles._down_any
+    if not is_x and down_any then -- oneway tiles, from the first row at or below the box
+      j = ceil((edge - origin) * inverse)
+      if origin + j * tile < edge then j = j + 1
+      elseif origin + (j - 1) * tile >= edge then j = j - 1 end
+      if j < 0 then j = 0 end
+      if j < count then
+        at = j * stride + first + 1
+        for i = 0, last - first do line = min(line, down_any[at + i]) end
+      end
+    end
+    hit = hit * min(max(count - line, 0), 1)
+    line = min(line, count - 1)
+    face = origin + line * tile
+    hit = hit * ceil(min(max(edge + delta - face, 0), 1))
   else
-    high = origin + (j + 2) * tile
-    if high < at or (not strict and high == at) then j = j + 1 end
+    -- the last line whose high face is before edge (a box of size 0: at or before it)
+    local j = floor((edge - origin) * inverse) - 1
+    if pos < edge then
+      j = j - 1 + ceil(min(max(edge - (origin + (j + 1) * tile), 0), 1))
+        + ceil(min(max(edge - (origin + (j + 2) * tile), 0), 1))
+    else
+      j = j - ceil(min(max(origin + (j + 1) * tile - edge, 0), 1))
+        + 1 - ceil(min(max(origin + (j + 2) * tile - edge, 0), 1))
+    end
+    j = min(j, count - 1)
+    hit = hit * min(max(j + 1, 0), 1)
+    j = max(j, 0)
+    local at, step = (j * stride + first * cross_stride) * 4 + (is_x and LEFT or UP),
+      cross_stride * 4
+    line = max(reach[at], reach[at + (last - first) * step])
+    for i = 1, last - first - 1 do line = max(line, reach[at + i * step]) end
+    hit = hit * min(max(line + 1, 0), 1)
+    line = max(line, 0)
+    face = origin + (line + 1) * tile
+    hit = hit * ceil(min(max(face - (pos + delta), 0), 1))
   end
-  return j
+  return face, hit, line, first, last
 end
 
 -- Lists the tiles on line `line` that stop the box (those whose reach is that line: the
@@ -344,76 +418,7 @@ local function list_line(tiles, probe, line, first, last, face)
   return 1 - missed_first + min(last - first, 1) * (1 - missed_last)
 end
 
--- The nearest of the lines `reach` gives for the tiles first..last across (`at`: the
--- index of the first, `step` from one to the next): the smallest (`forward`) or
--- the largest. The first and last tile are read without a loop (min and max compile to
--- no branch on LuaJIT); the loop runs only for a box more than two tiles across.
-local function nearest_line(reach, at, step, first, last, forward)
-  local best
-  if forward then
-    best = min(reach[at], reach[at + (last - first) * step])
-    for i = 1, last - first - 1 do best = min(best, reach[at + i * step]) end
-  else
-    best = max(reach[at], reach[at + (last - first) * step])
-    for i = 1, last - first - 1 do best = max(best, reach[at + i * step]) end
-  end
-  return best
-end
-
--- The line (0-based) of the nearest tile face ahead on the probe's axis among the tiles
--- first..last across, and its face; nil when the move's reach ends before it.
-local function nearest_face(tiles, probe, first, last)
-  local is_x = probe.is_x
-  local stride, cross_stride = 1, tiles.cols
-  if not is_x then stride, cross_stride = tiles.cols, 1 end
-  if probe.forward then
-    local j
-    if is_x then
-      j = ahead(tiles.x, tiles.tile_width, tiles._inverse_width, probe.pos,
-        probe.pos < probe.edge)
-    else
-      j = ahead(tiles.y, tiles.tile_height, tiles._inverse_height, probe.pos,
-        probe.pos < probe.edge)
-    end
-    if j < 0 then j = 0 elseif j >= (is_x and tiles.cols or tiles.rows) then return nil end
-    local line = nearest_line(tiles._reach, (j * stride + first * cross_stride) * 4
-      + (is_x and RIGHT or DOWN), cross_stride * 4, first, last, true)
-    if probe.blocks_oneway and tiles._down_any then
-      -- oneway tiles stop it from the first line at or below its bottom edge on
-      j = ahead(tiles.y, tiles.tile_height, tiles._inverse_height, probe.edge, false)
-      if j < 0 then j = 0 end
-      if j < tiles.rows then
-        line = min(line, nearest_line(tiles._down_any, j * stride + first * cross_stride + 1,
-          cross_stride, first, last, true))
-      end
-    end
-    if line >= (is_x and tiles.cols or tiles.rows) then return nil end
-    local face
-    if is_x then face = tiles.x + line * tiles.tile_width
-    else face = tiles.y + line * tiles.tile_height end
-    if face >= probe.reach then return nil end
-    return line, face
-  end
-  local j
-  if is_x then
-    j = behind(tiles.x, tiles.tile_width, tiles._inverse_width, probe.edge,
-      probe.pos < probe.edge)
-    if j > tiles.cols - 1 then j = tiles.cols - 1 end
-  else
-    j = behind(tiles.y, tiles.tile_height, tiles._inverse_height, probe.edge,
-      probe.pos < probe.edge)
-    if j > tiles.rows - 1 then j = tiles.rows - 1 end
-  end
-  if j < 0 then return nil end
-  local line = nearest_line(tiles._reach, (j * stride + first * cross_stride) * 4
-    + (is_x and LEFT or UP), cross_stride * 4, first, last, false)
-  if line < 0 then return nil end
-  local face
-  if is_x then face = tiles.x + (line + 1) * tiles.tile_width
-  else face = tiles.y + (line + 1) * tiles.tile_height end
-  if face <= probe.reach then return nil end
-  return line, face
-end
+layer.list_line = list_line
 
 ---Nearest tile face the probe's box meets in the layer. Returns the face coordinate
 ---and how many tiles lie on it (their 1-based col and row written to probe.cols and
@@ -423,17 +428,9 @@ end
 ---@param probe budge.AxisProbe
 ---@return number? face, integer count
 function layer.tile_face(tiles, probe)
-  local first, last
-  if probe.is_x then
-    first, last = span(tiles.y, tiles.tile_height, tiles._inverse_height, tiles.rows,
-      probe.cross, probe.cross_end)
-  else
-    first, last = span(tiles.x, tiles.tile_width, tiles._inverse_width, tiles.cols,
-      probe.cross, probe.cross_end)
-  end
-  if first > last then return nil, 0 end
-  local line, face = nearest_face(tiles, probe, first, last)
-  if line == nil then return nil, 0 end
+  local face, hit, line, first, last = layer.tile_line(tiles, probe.is_x, probe.forward,
+    probe.pos, probe.size, probe.delta, probe.cross, probe.cross_end)
+  if hit == 0 then return nil, 0 end
   return face, list_line(tiles, probe, line, first, last, face)
 end
 

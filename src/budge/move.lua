@@ -30,6 +30,7 @@ local before, first_contact = sweep.before, sweep.first_contact
 local NORMAL_X, NORMAL_Y = sweep.NORMAL_X, sweep.NORMAL_Y
 local tile_face, tile_face_scan, tile_stop = layer.tile_face, layer.tile_face_scan,
   layer.tile_stop
+local tile_line, list_line = layer.tile_line, layer.list_line
 local gather, clip_to_boxes, clip_to_bounds = solids.gather, solids.clip_to_boxes,
   solids.clip_to_bounds
 local gather_sensors, gather_all = solids.gather_sensors, solids.gather_all
@@ -143,6 +144,38 @@ local function layers_stop(world, is_x, pos, cross, cross_end, size, delta, done
     end
   end
   return best
+end
+
+-- LuaJIT's axis phase in a world of one tile layer and actors alone (move_axis_sweep
+-- calls it; phase_stop's outcomes, read from layer.tile_line): the box at `pos` (of
+-- `size`) on the axis, from `cross` across it (`cross_size` wide), moving by `delta`,
+-- `done` px into a move of `path` px; returns where it stops, with its tiles as hits.
+-- LuaJIT shaping: the one branch on whether a tile stops it is taken here, after
+-- tile_line, where few values are live; the rest is read from the layer again when it
+-- does. Through axis_phase and phase_stop, the world bench's tile moves took 191 ns
+-- instead of 169 (`luajit bench/world.lua --profile tiles`, 11 runs each, interleaved,
+-- 2026-12-02).
+local function lean_phase(world, is_x, pos, cross, size, cross_size, delta, done, path)
+  local tiles = world._layers[1]
+  local forward = delta > 0
+  local face, hit, line, first, last = tile_line(tiles, is_x, forward, pos, size, delta,
+    cross, cross + cross_size)
+  if hit == 0 then return pos + delta end
+  local probe = world._probe
+  probe.is_x, probe.forward, probe.blocks_oneway, probe.edge = is_x, forward,
+    not is_x and forward, pos + size
+  local count = list_line(tiles, probe, line, first, last, face)
+  local stop, t, side = face -- (the outcomes sweep.stop_forward / stop_backward give)
+  if forward then
+    if face >= pos + size then stop = before(face, size, pos) else stop = pos end
+    t = (done + (stop - pos)) / path
+  else
+    if face > pos then stop = pos end
+    t = (done + (pos - stop)) / path
+  end
+  if is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
+  add_tile_hits(world, tiles, side, probe.cols, probe.rows, count, t)
+  return stop
 end
 
 -- The rest of axis_phase, from what it wrote into the probe: the nearest stop among the
@@ -588,6 +621,24 @@ local function move_axis_sweep(world, actor, dx, dy, filter)
     end
     actor.x, actor.y = x, y
     return #world._layers < 2 -- (no solid and no sensor on this path)
+  end
+  if BRANCH_FREE and world._solid_count == 0 and world._sensor_count == 0
+    and world._layers[2] == nil and world._layers[1] then
+    -- LuaJIT, one tile layer and actors alone: straight to lean_phase (the hits are in
+    -- order: one layer, x before y)
+    local path = (dx < 0 and -dx or dx) + (dy < 0 and -dy or dy)
+    local x, y = actor.x, actor.y
+    if dx ~= 0 then
+      world._round = 1
+      x = lean_phase(world, true, x, y, actor.width, actor.height, dx, 0, path)
+    end
+    if dy ~= 0 then
+      world._round = 2
+      y = lean_phase(world, false, y, x, actor.height, actor.width, dy, dx < 0 and -dx or dx,
+        path)
+    end
+    actor.x, actor.y = x, y
+    return true
   end
   local probe = world._probe
   -- (no local more than needed: every local here is carried into each side trace of the
