@@ -320,12 +320,11 @@ function layer.tile_line(tiles, is_x, forward, pos, size, delta, cross, cross_en
   if forward then
     -- the first line whose low face is past pos (a box of size 0: at or past it)
     local j = ceil((pos - origin) * inverse)
-    if pos < edge then
-      j = j + 1 - ceil(min(max(origin + j * tile - pos, 0), 1))
-        - ceil(min(max(origin + (j - 1) * tile - pos, 0), 1))
+    local near = origin + j * tile
+    if near < pos or (pos < edge and near == pos) then j = j + 1
     else
-      j = j + ceil(min(max(pos - (origin + j * tile), 0), 1))
-        - 1 + ceil(min(max(pos - (origin + (j - 1) * tile), 0), 1))
+      near = origin + (j - 1) * tile
+      if near > pos or (pos >= edge and near == pos) then j = j - 1 end
     end
     j = max(j, 0)
     hit = hit * min(max(count - j, 0), 1)
@@ -352,12 +351,11 @@ function layer.tile_line(tiles, is_x, forward, pos, size, delta, cross, cross_en
   else
     -- the last line whose high face is before edge (a box of size 0: at or before it)
     local j = floor((edge - origin) * inverse) - 1
-    if pos < edge then
-      j = j - 1 + ceil(min(max(edge - (origin + (j + 1) * tile), 0), 1))
-        + ceil(min(max(edge - (origin + (j + 2) * tile), 0), 1))
+    local high = origin + (j + 1) * tile
+    if high > edge or (pos < edge and high == edge) then j = j - 1
     else
-      j = j - ceil(min(max(origin + (j + 1) * tile - edge, 0), 1))
-        + 1 - ceil(min(max(origin + (j + 2) * tile - edge, 0), 1))
+      high = origin + (j + 2) * tile
+      if high < edge or (pos >= edge and high == edge) then j = j + 1 end
     end
     j = min(j, count - 1)
     hit = hit * min(max(j + 1, 0), 1)
