@@ -1,5 +1,6 @@
--- budge.layer's axis scans (tile_face, read from the reach tables, tile_face_scan, the
--- line scan a world with hashed solids uses on LuaJIT, and tile_stop, Lua 5.x's form of
+-- budge.layer's axis scans (tile_face, read from the reach tables by tile_line and
+-- list_line, as LuaJIT's moves in a world of one layer read them; tile_face_scan, the line
+-- scan a world with hashed solids uses on LuaJIT; and tile_stop, Lua 5.x's form of
 -- tile_face) against a brute force over every tile of the layer, and the reach tables
 -- kept up to date by world:update.
 local layer = require("budge.layer")

@@ -267,10 +267,10 @@ end
 -- at a branch, in this function and in every caller up to the game's loop, is carried
 -- into the branch's side trace, and with a dozen numbers there LuaJIT cannot compile the
 -- side trace at all ("NYI: register coalescing too complex", thousands of aborts per run
--- of the world bench before this shape). Hence tile_line below decides without a branch
--- whether a tile stops the box and which line (its callers branch on the answer, where
--- few values are live), one or two tiles across are read without a loop, and the tiles
--- on the line are listed by list_line, apart.
+-- of the world bench before this shape). Hence tile_line below says whether a tile
+-- stops the box as a number, not a branch (its callers branch on it, where few values
+-- are live), one or two tiles across are read without a loop, and the tiles on the line
+-- are listed by list_line, apart.
 
 -- This shape is LuaJIT's: in a world of tiles and actors Lua 5.1-5.4 answer with
 -- layer.tile_stop below, the same arithmetic in one function with comparisons (there
@@ -280,14 +280,19 @@ end
 ---it moves by `delta` (`forward`: delta > 0), among the tiles across it from `cross` to
 ---`cross_end`: its face, 1 (or 0 when no tile stops the box: the other values are then
 ---meaningless), the line, and the tiles first..last (0-based) across. The same answer as
----tile_stop's, decided without a branch: for finite numbers b - a > 0 exactly when a < b,
----so ceil(min(max(b - a, 0), 1)) is 1 when a < b and 0 otherwise; the tile indices are
----clamped into the layer for the reads and a factor of the answer says whether they were
----in it. What branches: the direction, a box more than two tiles across, oneway tiles, and
----a division rounding across a tile edge.
----LuaJIT shaping: with the decisions as branches (the line ahead, a tile met or not), the
----world bench's tile moves took 186 ns instead of 168 (`luajit bench/world.lua --profile
----tiles`, 11 runs each, interleaved, 2026-12-02).
+---tile_stop's. Whether a tile stops the box is a product of 0s and 1s, with no branch:
+---the tile indices are clamped into the layer for the reads (min and max) and a factor
+---says whether they were in it, and the face is checked against the move's reach as
+---ceil(min(max(reach - face, 0), 1)), 1 when face < reach and 0 otherwise (for finite
+---numbers b - a > 0 exactly when a < b). What branches is what is all but always the
+---same for a box from one move to the next: the direction, a box more than two tiles
+---across, oneway tiles, and the roundings checked at the tile edges.
+---LuaJIT shaping: move.lua's lean_phase branches once on the answer. Through axis_phase,
+---phase_stop and the tile_face before this one (which branched on each decision), the
+---world bench's tile moves took 191 ns instead of 169 (`luajit bench/world.lua --profile
+---tiles`, 11 runs each, interleaved, 2026-12-02). The edge checks are comparisons, not
+---the same ceil(min(max())) form: that chain of roundings made tile_line take 26 ns a
+---call instead of 14.5 (boxes at random on the bench map, 2026-12-02).
 ---@param tiles budge.TileLayer
 ---@param is_x boolean
 ---@param forward boolean
@@ -435,13 +440,13 @@ end
 ---layer.tile_face's answer on Lua 5.1-5.4, from its inputs rather than a probe: the box
 ---at `pos` (of `size`) on the axis moving by `delta` (`forward`: delta > 0), from `cross`
 ---to `cross_end` across it; the tiles on the face into out_cols and out_rows.
----Speed: the same arithmetic and reads as tile_face, with span, ahead, behind,
----nearest_line and list_line written out and comparisons for min and max (on Lua 5.x a
----call, even to math.min, costs more than a branch). `lua5.4 bench/world.lua --way tiles
+---Speed: the same arithmetic and reads as tile_line and list_line, with span and
+---list_line written out and comparisons for min and max (on Lua 5.x a call, even to
+---math.min, costs more than a branch). `lua5.4 bench/world.lua --way tiles
 -----count 1000 --frames 60`, 3 fresh runs each, interleaved, 2026-12-02, with move.lua's
 ---layers_stop: 2196-2323 ns per move through tile_face and phase_stop, 1740-1750 through
 ---this. On LuaJIT its loops cost more than the calls (the same move took 786 ns against
----152): LuaJIT keeps tile_face. spec/layer_spec.lua holds both to a brute force.
+---152): LuaJIT keeps tile_line. spec/layer_spec.lua holds them to a brute force.
 ---@param tiles budge.TileLayer
 ---@param is_x boolean
 ---@param forward boolean

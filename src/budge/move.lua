@@ -53,9 +53,10 @@ local MAX_STEPS = 4096
 -- narrower than its move); it stops at the last one.
 local MAX_BOUNCES = 16
 local HUGE = math.huge
--- In a world of tiles and actors, LuaJIT takes phase_stop's shape (the move's values in
--- the probe, tile_face's reads) and Lua 5.1-5.4 layers_stop's (positional values,
--- layer.tile_stop): see layers_stop.
+-- In a world of tiles and actors, LuaJIT takes lean_phase's shape with one layer (one
+-- branch on layer.tile_line's answer) and phase_stop's with more (the move's values in
+-- the probe, tile_face's reads), and Lua 5.1-5.4 layers_stop's (positional values,
+-- layer.tile_stop): see those.
 local BRANCH_FREE = rawget(_G, "jit") ~= nil
 
 local move = {}
