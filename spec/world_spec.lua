@@ -210,17 +210,20 @@ describe("world:move", function()
   end)
 
   it("gives a move's contacts in the order they happened: x phase first, then by t, top, "
-    .. "left; with one layer, two, and solids, wide boxes and long moves", function()
+    .. "left; with one layer, two, a layer and solids, and solids in rows beside sensors, "
+    .. "wide boxes and long moves", function()
     -- the oracle: each hit's phase from its side, the top and left of what it met from the
     -- tile's col and row or the solid's box; consecutive hits must not be out of order
     local new_random = require("fixtures.random").new
     local random = new_random(20261202)
     local PHASE = {left = 1, right = 1, floor = 2, ceiling = 2}
-    local checked, multi, layered = 0, 0, 0
-    for scene = 1, 240 do
+    local checked, multi, layered, boxed = 0, 0, 0, 0
+    for scene = 1, 320 do
       local world = budge.new_world()
-      local layers, kinds = {}, scene % 3 -- 0: one layer, 1: two layers, 2: a layer and solids
-      for k = 1, kinds == 1 and 2 or 1 do
+      -- 0: one layer, 1: two layers, 2: a layer and solids, 3: solids in rows (several met
+      -- at once) and sensors
+      local layers, kinds = {}, scene % 4
+      for k = 1, kinds == 1 and 2 or (kinds == 3 and 0 or 1) do
         local grid = {}
         for row = 1, 12 do
           grid[row] = {}
@@ -234,6 +237,13 @@ describe("world:move", function()
       if kinds == 2 then
         for _ = 1, 6 do
           world:add_solid(box(random(0, 180), random(0, 180), random(4, 30), random(4, 30)))
+        end
+      elseif kinds == 3 then
+        for _ = 1, 30 do
+          world:add_solid(box(random(0, 11) * 16, random(0, 11) * 16, 16, 16))
+        end
+        for _ = 1, 4 do
+          world:add_sensor(box(random(0, 180), random(0, 180), random(4, 30), random(4, 30)))
         end
       end
       for _ = 1, 20 do
@@ -252,23 +262,29 @@ describe("world:move", function()
         for i = 2, n do
           local p1, t1, top1, left1 = key(hits[i - 1])
           local p2, t2, top2, left2 = key(hits[i])
-          local in_order = p1 < p2 or (p1 == p2 and (t1 < t2 or (t1 == t2 and (top1 < top2
-            or (top1 == top2 and left1 <= left2)))))
-          assert(in_order, ("scene %d: hit %d (phase %d, t %.17g, top %.17g, left %.17g) "
-            .. "after (phase %d, t %.17g, top %.17g, left %.17g)"):format(scene, i, p2, t2,
-            top2, left2, p1, t1, top1, left1))
+          local in_order
+          if p1 and p2 then
+            in_order = p1 < p2 or (p1 == p2 and (t1 < t2 or (t1 == t2 and (top1 < top2
+              or (top1 == top2 and left1 <= left2)))))
+          else -- (a sensor the box was inside of at the start of a phase: no side, its time)
+            in_order = t1 <= t2
+          end
+          assert(in_order, ("scene %d: hit %d (phase %s, t %.17g, top %.17g, left %.17g) "
+            .. "after (phase %s, t %.17g, top %.17g, left %.17g)"):format(scene, i,
+            tostring(p2), t2, top2, left2, tostring(p1), t1, top1, left1))
           checked = checked + 1
           if kinds == 0 and p1 == p2 then layered = layered + 1 end
+          if kinds == 3 and p1 == p2 and t1 == t2 then boxed = boxed + 1 end
         end
         if n > 2 then multi = multi + 1 end
         world:remove(actor)
       end
     end
     -- the scenes are not empty of what they test: pairs of hits in one phase of a one-layer
-    -- move, and moves with more than two contacts
-    assert.is_true(checked > 1000 and layered > 200 and multi > 100,
-      ("%d pairs checked, %d in one phase of one layer, %d moves with 3+ hits"):format(checked,
-        layered, multi))
+    -- move, pairs of boxes met at once, and moves with more than two contacts
+    assert.is_true(checked > 1000 and layered > 200 and boxed > 100 and multi > 100,
+      ("%d pairs checked, %d in one phase of one layer, %d boxes met at once, %d moves with "
+        .. "3+ hits"):format(checked, layered, boxed, multi))
   end)
 
   it("reuses its contact records instead of allocating new ones", function()

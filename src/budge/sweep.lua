@@ -76,6 +76,8 @@ end
 ---@field best? number output: the nearest stop found so far
 ---@field touch budge.HashRecord[] output: the hashed records that stop the box at best
 ---@field touched integer output: how many of touch are valid
+---@field sources integer output: how many layers and boxes the phase's hits at best come
+---from (move.lua: hits from one are already in order)
 ---@field cols integer[] output of layer.tile_face: the tiles on the face found
 ---@field rows integer[]
 ---@field sign number Hash:axis_stop's scratch over packed cells: 1 forward, -1 back
@@ -91,7 +93,7 @@ end
 ---@return budge.AxisProbe
 function sweep.new_probe()
   return {is_x = true, forward = true, pos = 0, size = 0, edge = 0, reach = 0, cross = 0,
-    cross_end = 0, blocks_oneway = false, before = 0, path = 1, touch = {}, touched = 0,
+    cross_end = 0, blocks_oneway = false, before = 0, path = 1, touch = {}, touched = 0, sources = 0,
     cols = {1, 1}, rows = {1, 1}, sign = 1, signed_reach = 0, signed_pos = 0,
     face_slot = 1, cross_slot = 2, scan_cx0 = 0, scan_cy0 = 0, cell_size = 1}
 end

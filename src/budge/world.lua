@@ -95,6 +95,8 @@ local world = {}
 ---@field package _n_hits integer
 ---@field package _check_hits budge.Hit[] the last check's contacts (swapped in while it runs)
 ---@field package _round integer the phase of the move now recording contacts
+---@field package _mixed integer more than 0 when a move's contacts may be out of order
+---(a phase met several layers or boxes, or the move crossed sensors: move.lua)
 ---@field package _move_stamp integer counts moves (what a move crossed carries its stamp)
 ---@field package _probe budge.AxisProbe the axis scans' scratch
 ---@field package _set budge.CandidateSet the candidates of one move
@@ -157,7 +159,7 @@ function world.new_world(opts)
     _bounds = solids.new_bounds(), _box_bounds = solids.new_bounds(),
     _actors = hash.new(cell_size), _actor_list = {}, _dirty = {}, _n_dirty = 0,
     _sensors = hash.new(cell_size), _sensor_list = {}, _sensor_count = 0,
-    _hits = hits.new_list(), _n_hits = 0, _check_hits = hits.new_list(), _round = 0,
+    _hits = hits.new_list(), _n_hits = 0, _check_hits = hits.new_list(), _round = 0, _mixed = 0,
     _move_stamp = 0,
     _probe = sweep.new_probe(),
     _set = set, _cross = sweep.new_set(), _crossed = {}, _candidate_before = move.candidate_order(set), _order = {},
