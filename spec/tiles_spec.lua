@@ -176,6 +176,8 @@ describe("budge.tiles.merge", function()
       "tile_width must be a finite number > 0, got 0")
     assert.has_error(function() merge({{1}}, 16, 0 / 0) end,
       "tile_height must be a finite number > 0, got nan")
+    assert.has_error(function() merge({{1}}, 1e-309, 16) end,
+      "tile_width must be > 2^-1024 (its inverse must be finite), got 1e-309")
     assert.has_error(function() merge({{1}}, 16, 16, {max_speed = -1}) end,
       "opts.max_speed must be a finite number > 0 or nil, got -1")
     assert.has_error(function() merge({{1}}, 16, 16, {is_solid = 1}) end,

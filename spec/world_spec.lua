@@ -135,6 +135,8 @@ describe("world:add_tiles", function()
       "grid must be a table of rows (grid[row][col]), got nil")
     assert.has_error(function() world:add_tiles({{1}}, 0, 16) end,
       "tile_width must be a finite number > 0, got 0")
+    assert.has_error(function() world:add_tiles({{1}}, 16, 1e-310) end,
+      "tile_height must be > 2^-1024 (its inverse must be finite), got 1e-310")
     assert.has_error(function() world:add_tiles({{1}}, 16, 16, {y = math.huge}) end,
       "opts.y must be a finite number, got inf")
     assert.has_error(function() world:add_tiles({{1}}, 16, 16, {is_solid = true}) end,
