@@ -93,8 +93,8 @@ end
 ---@return budge.AxisProbe
 function sweep.new_probe()
   return {is_x = true, forward = true, pos = 0, size = 0, edge = 0, reach = 0, cross = 0,
-    cross_end = 0, blocks_oneway = false, before = 0, path = 1, touch = {}, touched = 0, sources = 0,
-    cols = {1, 1}, rows = {1, 1}, sign = 1, signed_reach = 0, signed_pos = 0,
+    cross_end = 0, blocks_oneway = false, before = 0, path = 1, touch = {}, touched = 0,
+    sources = 0, cols = {1, 1}, rows = {1, 1}, sign = 1, signed_reach = 0, signed_pos = 0,
     face_slot = 1, cross_slot = 2, scan_cx0 = 0, scan_cy0 = 0, cell_size = 1}
 end
 

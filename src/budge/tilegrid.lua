@@ -23,6 +23,17 @@ tilegrid.EMPTY, tilegrid.SOLID, tilegrid.ONEWAY = EMPTY, SOLID, ONEWAY
 ---@field is_solid? fun(id: any): boolean which ids are solid (default: any but nil, false, 0)
 ---@field is_oneway? fun(id: any): boolean which ids are oneway platforms (default: none)
 
+-- A tile size: finite, > 0, and with a finite inverse (below 2^-1024 it overflows).
+local function check_tile_size(size, name, level)
+  if not is_finite(size) or size <= 0 then
+    error(format("%s must be a finite number > 0, got %s", name, describe(size)), level + 1)
+  end
+  if not is_finite(1 / size) then
+    error(format("%s must be > 2^-1024 (its inverse must be finite), got %s", name,
+      describe(size)), level + 1)
+  end
+end
+
 ---Checks the options a tile layer shares wherever it is read: tile sizes > 0 with a finite
 ---inverse (a layer finds tiles by multiplying with it), opts a table or nil, opts.x and
 ---opts.y finite, opts.is_solid and opts.is_oneway functions.
@@ -33,20 +44,8 @@ tilegrid.EMPTY, tilegrid.SOLID, tilegrid.ONEWAY = EMPTY, SOLID, ONEWAY
 ---@param level integer
 ---@return budge.LayerOptions opts the options, or a new empty table
 function tilegrid.check_options(tile_width, tile_height, opts, level)
-  if not is_finite(tile_width) or tile_width <= 0 then
-    error(format("tile_width must be a finite number > 0, got %s", describe(tile_width)),
-      level + 1)
-  end
-  if not is_finite(tile_height) or tile_height <= 0 then
-    error(format("tile_height must be a finite number > 0, got %s", describe(tile_height)),
-      level + 1)
-  end
-  for _, size in ipairs({{tile_width, "tile_width"}, {tile_height, "tile_height"}}) do
-    if not is_finite(1 / size[1]) then -- (below 2^-1024 the inverse overflows)
-      error(format("%s must be > 2^-1024 (its inverse must be finite), got %s", size[2],
-        describe(size[1])), level + 1)
-    end
-  end
+  check_tile_size(tile_width, "tile_width", level + 1)
+  check_tile_size(tile_height, "tile_height", level + 1)
   if opts ~= nil and type(opts) ~= "table" then
     error(format("opts must be a table or nil, got %s", describe(opts)), level + 1)
   end
