@@ -8,8 +8,8 @@ local random_source = require("fixtures.random")
 -- Where the probe stops against one box, by sweep's own rules, or nil.
 local function stop_at(p, rec)
   local low, high, lo, hi
-  if p.is_x then low, high, lo, hi = rec.x, rec.x + rec.width, rec.y, rec.y + rec.height
-  else low, high, lo, hi = rec.y, rec.y + rec.height, rec.x, rec.x + rec.width end
+  if p.is_x then low, high, lo, hi = rec[1], rec[1] + rec[3], rec[2], rec[2] + rec[4]
+  else low, high, lo, hi = rec[2], rec[2] + rec[4], rec[1], rec[1] + rec[3] end
   if not (lo < p.cross_end and p.cross < hi) then return nil end
   if p.forward then
     return sweep.stop_forward(low, p.pos, p.edge, p.reach, p.size, rec.oneway, p.blocks_oneway)
@@ -45,10 +45,10 @@ local function new_probe(random, dyadic, records)
   if random(0, 3) == 0 then
     local rec = records[random(1, #records)]
     if random(0, 1) == 0 then size = 0 end
-    local low = p.is_x and rec.x or rec.y
-    local face = random(0, 1) == 0 and low or low + (p.is_x and rec.width or rec.height)
+    local low = p.is_x and rec[1] or rec[2]
+    local face = random(0, 1) == 0 and low or low + (p.is_x and rec[3] or rec[4])
     pos = random(0, 1) == 0 and face or face - size
-    cross = (p.is_x and rec.y or rec.x) - random(0, 20) / (dyadic and 2 or 3)
+    cross = (p.is_x and rec[2] or rec[1]) - random(0, 20) / (dyadic and 2 or 3)
   end
   p.forward, p.delta, p.pos, p.size, p.edge = delta > 0, delta, pos, size, pos + size
   p.reach = delta > 0 and pos + size + delta or pos + delta
@@ -75,7 +75,7 @@ local function check_packs(h)
     assert.are.equal(#cell * 6, #pack)
     for i, rec in ipairs(cell) do
       local base = i * 6 - 6
-      assert.are.same({rec.x, rec.y, rec.x + rec.width, rec.y + rec.height, rec.oneway == true, rec},
+      assert.are.same({rec[1], rec[2], rec[1] + rec[3], rec[2] + rec[4], rec.oneway == true, rec},
         {pack[base + 1], pack[base + 2], pack[base + 3], pack[base + 4], pack[base + 5],
           pack[base + 6]})
     end
@@ -94,20 +94,19 @@ describe("Hash:axis_stop over packed cells", function()
       local packed, plain = hash.new(cell_size, true), hash.new(cell_size)
       local records, twins = {}, {}
       local function add()
-        local rec = {
-          x = random(-1200, 1200) / (dyadic and 8 or 7),
-          y = random(-1200, 1200) / (dyadic and 8 or 7),
-          width = random(0, random(0, 9) == 0 and 4000 or 300) / (dyadic and 4 or 3),
-          height = random(0, random(0, 9) == 0 and 4000 or 300) / (dyadic and 4 or 3),
+        local rec = { -- (a record's box: [1] x, [2] y, [3] width, [4] height)
+          random(-1200, 1200) / (dyadic and 8 or 7),
+          random(-1200, 1200) / (dyadic and 8 or 7),
+          random(0, random(0, 9) == 0 and 4000 or 300) / (dyadic and 4 or 3),
+          random(0, random(0, 9) == 0 and 4000 or 300) / (dyadic and 4 or 3),
           oneway = random(0, 4) == 0,
         }
         if random(0, 40) == 0 then -- more than BIG_CELLS cells: kept in the big list
-          rec.width, rec.height = random(2000, 3000), random(2000, 3000)
+          rec[3], rec[4] = random(2000, 3000), random(2000, 3000)
         end
-        local twin = {x = rec.x, y = rec.y, width = rec.width, height = rec.height,
-          oneway = rec.oneway}
-        packed:insert(rec, rec.x, rec.y, rec.width, rec.height)
-        plain:insert(twin, twin.x, twin.y, twin.width, twin.height)
+        local twin = {rec[1], rec[2], rec[3], rec[4], oneway = rec.oneway}
+        packed:insert(rec, rec[1], rec[2], rec[3], rec[4])
+        plain:insert(twin, twin[1], twin[2], twin[3], twin[4])
         records[#records + 1], twins[rec] = rec, twin
       end
       for _ = 1, random(1, 60) do add() end
@@ -130,11 +129,11 @@ describe("Hash:axis_stop over packed cells", function()
           local twin = twins[rec]
           packed:remove(rec)
           plain:remove(twin)
-          rec.x = rec.x + random(-100, 100) / (dyadic and 4 or 3)
-          rec.y = rec.y + random(-100, 100) / (dyadic and 4 or 3)
-          twin.x, twin.y = rec.x, rec.y
-          packed:insert(rec, rec.x, rec.y, rec.width, rec.height)
-          plain:insert(twin, twin.x, twin.y, twin.width, twin.height)
+          rec[1] = rec[1] + random(-100, 100) / (dyadic and 4 or 3)
+          rec[2] = rec[2] + random(-100, 100) / (dyadic and 4 or 3)
+          twin[1], twin[2] = rec[1], rec[2]
+          packed:insert(rec, rec[1], rec[2], rec[3], rec[4])
+          plain:insert(twin, twin[1], twin[2], twin[3], twin[4])
         else
           local p, q = new_probe(random, dyadic, records), sweep.new_probe()
           for k, v in pairs(p) do if type(v) ~= "table" then q[k] = v end end
@@ -174,14 +173,14 @@ describe("Hash:axis_stop over packed cells", function()
 
   it("keeps a box's packed copy when Hash:moved moves it within its cells", function()
     local packed = hash.new(64, true)
-    local rec = {x = 10, y = 0, width = 4, height = 4}
-    packed:insert(rec, rec.x, rec.y, rec.width, rec.height)
+    local rec = {10, 0, 4, 4}
+    packed:insert(rec, rec[1], rec[2], rec[3], rec[4])
     for i = 1, 8 do -- more than a hash scanned whole
-      local other = {x = 1000 + i * 100, y = 1000, width = 4, height = 4}
-      packed:insert(other, other.x, other.y, other.width, other.height)
+      local other = {1000 + i * 100, 1000, 4, 4}
+      packed:insert(other, other[1], other[2], other[3], other[4])
     end
-    rec.x = 20
-    packed:moved(rec, rec.x, rec.y, rec.width, rec.height)
+    rec[1] = 20
+    packed:moved(rec, rec[1], rec[2], rec[3], rec[4])
     local p = sweep.new_probe()
     p.is_x, p.forward, p.delta, p.pos, p.size, p.edge = true, true, 30, 0, 2, 2
     p.reach, p.cross, p.cross_end, p.blocks_oneway = 32, 0, 2, false
@@ -196,8 +195,8 @@ describe("Hash:axis_stop over packed cells", function()
     -- 3000 boxes side by side, each in two rows of cells, all met at the same top face
     local packed = hash.new(16, true)
     for i = 0, 2999 do
-      local rec = {x = i * 4, y = 12, width = 2, height = 8}
-      packed:insert(rec, rec.x, rec.y, rec.width, rec.height)
+      local rec = {i * 4, 12, 2, 8}
+      packed:insert(rec, rec[1], rec[2], rec[3], rec[4])
     end
     local p = sweep.new_probe()
     p.is_x, p.forward, p.delta, p.pos, p.size, p.edge = false, true, 30, -20, 10, -10
@@ -211,6 +210,6 @@ describe("Hash:axis_stop over packed cells", function()
     assert.are.equal(2, p.best)
     assert.are.equal(3000, p.touched)
     assert.is_true(budget == 0, budget) -- the tie test reads no earlier entry
-    for i = 1, 3000 do assert.are.equal((i - 1) * 4, rawget(touch, i).x) end
+    for i = 1, 3000 do assert.are.equal((i - 1) * 4, rawget(touch, i)[1]) end
   end)
 end)

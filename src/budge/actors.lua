@@ -31,15 +31,15 @@ function actors.insert(world, record)
   list[index] = record
   record.index = index
   actors.copy(record)
-  record._fx, record._fy = record.x, record.y
-  hash:insert(record, record.x, record.y, record.width, record.height)
+  record._fx, record._fy = record[1], record[2]
+  hash:insert(record, record[1], record[2], record[3], record[4])
 end
 
 ---Copies the actor's box into its record (after the box was checked).
 ---@param record budge.Record
 function actors.copy(record)
   local item = record.item
-  record.x, record.y, record.width, record.height = item.x, item.y, item.width, item.height
+  record[1], record[2], record[3], record[4] = item.x, item.y, item.width, item.height
 end
 
 ---Takes an actor's (or a sensor's) record out of its list and hash.
@@ -62,7 +62,7 @@ end
 ---@param height any
 function actors.copy_size(record, width, height)
   if is_size(width) and is_size(height) then
-    record.width, record.height = width, height
+    record[3], record[4] = width, height
   end
 end
 
@@ -73,8 +73,8 @@ end
 ---@param record budge.Record
 function actors.placed(world, record)
   local item = record.item
-  record.x, record.y = item.x, item.y
-  world._actors:moved(record, record.x, record.y, record.width, record.height)
+  record[1], record[2] = item.x, item.y
+  world._actors:moved(record, record[1], record[2], record[3], record[4])
 end
 
 ---Notes that an actor moved: its cells are brought up to date by actors.rehash.
@@ -95,7 +95,7 @@ end
 function actors.rehash_one(world, record)
   actors.copy(record)
   local _, hash = home(world, record)
-  hash:moved(record, record.x, record.y, record.width, record.height)
+  hash:moved(record, record[1], record[2], record[3], record[4])
 end
 
 ---Brings the cells of the actors moved since the last call up to date.
@@ -107,7 +107,7 @@ function actors.rehash(world)
     dirty[i] = nil
     record.dirty = false
     if record.index then -- still in the world
-      hash:moved(record, record.x, record.y, record.width, record.height)
+      hash:moved(record, record[1], record[2], record[3], record[4])
     end
   end
   world._n_dirty = 0

@@ -546,8 +546,8 @@ end
 -- True when record b comes before record a met at the same time: its centre nearer the
 -- centre of the box (x, y, w, h), or as near and added earlier.
 local function centre_before(b, a, x, y, w, h)
-  local da = square_distance(x, y, w, h, a.x, a.y, a.width, a.height)
-  local db = square_distance(x, y, w, h, b.x, b.y, b.width, b.height)
+  local da = square_distance(x, y, w, h, a[1], a[2], a[3], a[4])
+  local db = square_distance(x, y, w, h, b[1], b[2], b[3], b[4])
   return db < da or db == da and b.id < a.id
 end
 
@@ -566,9 +566,9 @@ end
 -- by 0, the overlap the rectangle test found makes them -inf and inf: no branch on the
 -- direction).
 local function leg_times(self, record)
-  local rx, ry = record.x, record.y
-  return (rx - self._leg_x1) / self._leg_dx, (rx + record.width - self._leg_x) / self._leg_dx,
-    (ry - self._leg_y1) / self._leg_dy, (ry + record.height - self._leg_y) / self._leg_dy
+  local rx, ry = record[1], record[2]
+  return (rx - self._leg_x1) / self._leg_dx, (rx + record[3] - self._leg_x) / self._leg_dx,
+    (ry - self._leg_y1) / self._leg_dy, (ry + record[4] - self._leg_y) / self._leg_dy
 end
 
 -- Makes the move's region (see plan_move) hold what the leg's rectangle overlaps: the
@@ -599,18 +599,18 @@ local function nearest_compared(self)
   local best, best_t, best_axis = nil, HUGE, 0
   for i = 1, self._region_n do
     local record = region[i]
-    local rx, ry = record.x, record.y
-    if rx < right and left < rx + record.width and ry < bottom and top < ry + record.height
+    local rx, ry = record[1], record[2]
+    if rx < right and left < rx + record[3] and ry < bottom and top < ry + record[4]
       and record._mark < pass then
-      local near_x, far_x = (rx - x1) / dx, (rx + record.width - x) / dx
-      local near_y, far_y = (ry - y1) / dy, (ry + record.height - y) / dy
+      local near_x, far_x = (rx - x1) / dx, (rx + record[3] - x) / dx
+      local near_y, far_y = (ry - y1) / dy, (ry + record[4] - y) / dy
       local enter_x, enter_y = min(near_x, far_x), min(near_y, far_y)
       -- (+ 0: -0 becomes 0, for math.max gives either zero on a tie, by interpreter)
       local first = max(enter_x, enter_y) + 0
       local exit = min(max(near_x, far_x), max(near_y, far_y))
       if first < exit and first < 1 and exit > 0 then
         if first < 0 then
-          first = overlap_ti(x, y, w, h, rx, ry, record.width, record.height)
+          first = overlap_ti(x, y, w, h, rx, ry, record[3], record[4])
         end
         if first < best_t or first == best_t and centre_before(record, best, x, y, w, h) then
           best, best_t = record, first
@@ -650,9 +650,9 @@ local function nearest(self)
   self._best, self._best_t = nil, HUGE
   for i = 1, self._region_n do
     local record = region[i]
-    local rx, ry = record.x, record.y
-    if min(self._leg_right - rx, rx + record.width - self._leg_left, self._leg_bottom - ry,
-      ry + record.height - self._leg_top, self._pass - record._mark) > 0 then
+    local rx, ry = record[1], record[2]
+    if min(self._leg_right - rx, rx + record[3] - self._leg_left, self._leg_bottom - ry,
+      ry + record[4] - self._leg_top, self._pass - record._mark) > 0 then
       local near_x, far_x, near_y, far_y = leg_times(self, record)
       -- (+ 0: -0 becomes 0, for math.max gives either zero on a tie, by interpreter)
       local first = max(min(near_x, far_x), min(near_y, far_y)) + 0
@@ -660,7 +660,7 @@ local function nearest(self)
       if min(exit - first, 1 - first, exit) > 0 then
         if first < 0 then -- overlapping at the start: bump's negative measure of it
           first = overlap_depth(self._leg_x, self._leg_y, self._w, self._h, rx, ry,
-            record.width, record.height)
+            record[3], record[4])
         end
         if first <= self._best_t then offer(self, record, first) end
       end
@@ -676,7 +676,7 @@ end
 -- Fills col for meeting `record` at leg time t (see leg_candidates) on the leg from (x, y)
 -- toward (goal_x, goal_y).
 local function fill_col(col, item, record, kind, t, axis, x, y, w, h, goal_x, goal_y)
-  local rx, ry, rw, rh = record.x, record.y, record.width, record.height
+  local rx, ry, rw, rh = record[1], record[2], record[3], record[4]
   col.item, col.other, col.type = item, record.item.item, kind
   col.slide, col.bounce = nil, nil
   if t < 0 then
@@ -901,7 +901,7 @@ function World:move(item, goal_x, goal_y, filter)
   if x ~= proxy.x or y ~= proxy.y then
     proxy.x, proxy.y = x, y
     local record = proxy._record
-    record.x, record.y = x, y
+    record[1], record[2] = x, y
     -- Loose cells: a moved item is registered in the cells of its box grown by a quarter
     -- cell each way, and registered again only when its box leaves them (a hash lookup
     -- finds it wherever its box is). Items that stay near where they are, or press on a

@@ -210,7 +210,7 @@ end
 ---@param dy number
 function carry.abandon(world, record, dx, dy)
   local solid = record.item
-  solid.x, solid.y = record.x + dx, record.y + dy -- the record still holds the start
+  solid.x, solid.y = record[1] + dx, record[2] + dy -- the record still holds the start
   if not record.removed then
     solids.unhash(world, record)
     solids.hash(world, record)

@@ -46,9 +46,9 @@ end
 -- nil when they never do.
 local function frame_overlap(a, b)
   local ax, ay, bx, by = a._fx, a._fy, b._fx, b._fy
-  local enter_x, exit_x = overlap_times(ax, a.width, a.x - ax, bx, b.width, b.x - bx)
+  local enter_x, exit_x = overlap_times(ax, a[3], a[1] - ax, bx, b[3], b[1] - bx)
   if enter_x == nil then return nil, nil end
-  local enter_y, exit_y = overlap_times(ay, a.height, a.y - ay, by, b.height, b.y - by)
+  local enter_y, exit_y = overlap_times(ay, a[4], a[2] - ay, by, b[4], b[2] - by)
   if enter_y == nil then return nil, nil end
   local enter = enter_x > enter_y and enter_x or enter_y
   local exit = exit_x < exit_y and exit_x or exit_y
@@ -116,9 +116,9 @@ local function refresh(world)
   end
   for i = 1, kept do
     local record = order[i]
-    local x, y, fx, fy = record.x, record.y, record._fx, record._fy
-    record._sx0, record._sx1 = (fx < x and fx or x), (fx < x and x or fx) + record.width
-    record._sy0, record._sy1 = (fy < y and fy or y), (fy < y and y or fy) + record.height
+    local x, y, fx, fy = record[1], record[2], record._fx, record._fy
+    record._sx0, record._sx1 = (fx < x and fx or x), (fx < x and x or fx) + record[3]
+    record._sy0, record._sy1 = (fy < y and fy or y), (fy < y and y or fy) + record[4]
   end
   -- insertion sort by the swept box's left edge, then the order added
   for i = 2, kept do
@@ -189,7 +189,7 @@ function contacts.finish(world, out)
   local order, pool, n = world._frame_order, world._contact_pool, world._n_contacts
   for i = 1, #order do
     local record = order[i]
-    record._fx, record._fy = record.x, record.y
+    record._fx, record._fy = record[1], record[2]
   end
   -- (sorted here, in the pool's own range: table.sort sees exactly the n records)
   local sorted = world._contact_sorted

@@ -94,9 +94,9 @@ function query.area(world, x, y, width, height)
     local record = found[i]
     found[i] = nil
     -- the record's copy of the box: where the world last saw it (checked then)
-    local bx, by = record.x, record.y
-    if bx < x + width and x < bx + record.width and by < y + height
-      and y < by + record.height then
+    local bx, by = record[1], record[2]
+    if bx < x + width and x < bx + record[3] and by < y + height
+      and y < by + record[4] then
       n = n + 1
       found[n] = record
     end
@@ -140,10 +140,10 @@ function query.sweep(world, x1, y1, x2, y2, width, height)
     found[i] = nil
     local t
     if point then -- (the segment rule: a zero-size box inside a zero-size one is met)
-      t = segment_enter(x1, y1, dx, dy, record.x, record.y, record.width, record.height)
+      t = segment_enter(x1, y1, dx, dy, record[1], record[2], record[3], record[4])
     else
-      t = box_enter(x1, y1, width, height, dx, dy, record.x, record.y, record.width,
-        record.height)
+      t = box_enter(x1, y1, width, height, dx, dy, record[1], record[2], record[3],
+        record[4])
     end
     if t then
       n = n + 1

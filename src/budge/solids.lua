@@ -48,7 +48,7 @@ function solids.hash(world, record)
   local item = record.item
   local x, y, width, height = item.x, item.y, item.width, item.height
   record.oneway = item.wall_type == "oneway"
-  record.x, record.y, record.width, record.height = x, y, width, height
+  record[1], record[2], record[3], record[4] = x, y, width, height
   world._solids:insert(record, x, y, width, height)
   record._in_hash = true
   local x1, y1 = x + width, y + height
@@ -179,8 +179,8 @@ end
 -- Appends a record's box to the cross set.
 local function cross_record(cross, record)
   local n = cross.n + 1
-  cross.x[n], cross.y[n], cross.w[n], cross.h[n] = record.x, record.y, record.width,
-    record.height
+  cross.x[n], cross.y[n], cross.w[n], cross.h[n] = record[1], record[2], record[3],
+    record[4]
   cross.other[n], cross.col[n], cross.row[n] = record.item, nil, nil
   cross.id[n], cross.record[n] = record.id, record
   cross.n = n
@@ -188,7 +188,7 @@ end
 
 -- Appends a record's box to the candidate set at index n, with its response.
 local function block_record(set, n, record, response)
-  set.x[n], set.y[n], set.w[n], set.h[n] = record.x, record.y, record.width, record.height
+  set.x[n], set.y[n], set.w[n], set.h[n] = record[1], record[2], record[3], record[4]
   set.oneway[n], set.other[n], set.col[n], set.row[n] = record.oneway, record.item, nil, nil
   set.id[n], set.response[n] = record.id, response
 end
@@ -295,7 +295,7 @@ local function append_records(found, count, set, n, self)
     found[i] = nil
     if not record.removed and record ~= self then
       n = n + 1
-      xs[n], ys[n], ws[n], hs[n] = record.x, record.y, record.width, record.height
+      xs[n], ys[n], ws[n], hs[n] = record[1], record[2], record[3], record[4]
       oneway[n], other[n], cols[n], rows[n], ids[n] = record.oneway, record.item, nil, nil,
         record.id
       records[n] = record
