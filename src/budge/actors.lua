@@ -16,9 +16,10 @@ local actors = {}
 
 local function is_size(value) return is_finite(value) and value >= 0 end
 
--- The list and hash an actor's or a sensor's record lives in.
+-- The list and hash an actor's or a sensor's record lives in (a record's [5] is its kind:
+-- budge.Record, world.lua).
 local function home(world, record)
-  if record.kind == "sensor" then return world._sensor_list, world._sensors end
+  if record[5] == "sensor" then return world._sensor_list, world._sensors end
   return world._actor_list, world._actors
 end
 
@@ -81,8 +82,8 @@ end
 ---@param world budge.World
 ---@param record budge.Record
 function actors.moved(world, record)
-  if not record.dirty then
-    record.dirty = true
+  if not record[6] then -- (a record's [6]: moved since its cells were brought up to date)
+    record[6] = true
     local n = world._n_dirty + 1
     world._dirty[n] = record
     world._n_dirty = n
@@ -105,7 +106,7 @@ function actors.rehash(world)
   for i = 1, world._n_dirty do
     local record = dirty[i]
     dirty[i] = nil
-    record.dirty = false
+    record[6] = false
     if record.index then -- still in the world
       hash:moved(record, record[1], record[2], record[3], record[4])
     end

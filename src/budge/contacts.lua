@@ -60,7 +60,7 @@ end
 local function wants(record, other)
   local actor = record.item
   local filter = actor.filter
-  if other.kind == "sensor" then
+  if other[5] == "sensor" then
     return filter == nil or response_of(filter(actor, other.item), other.item) ~= nil
   end
   return filter ~= nil and response_of(filter(actor, other.item), other.item) == CROSS
@@ -146,18 +146,18 @@ function contacts.find(world)
   for i = 1, count do
     local a = order[i]
     local right, top, bottom = a._sx1, a._sy0, a._sy1
-    local a_sensor = a.kind == "sensor"
+    local a_sensor = a[5] == "sensor" -- (a record's [5]: its kind)
     for j = i + 1, count do
       local b = order[j]
       if b._sx0 >= right then break end
-      if b._sy0 < bottom and top < b._sy1 and not (a_sensor and b.kind == "sensor") then
+      if b._sy0 < bottom and top < b._sy1 and not (a_sensor and b[5] == "sensor") then
         local enter, exit = frame_overlap(a, b)
         if enter then
           local first, second = a, b
           if b.id < a.id then first, second = b, a end
           local item, other
           if a_sensor then item, other = b, a
-          elseif b.kind == "sensor" then item, other = a, b
+          elseif b[5] == "sensor" then item, other = a, b
           end
           if item then
             if not wants(item, other) then item = nil end

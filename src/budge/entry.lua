@@ -31,7 +31,7 @@ entry.A_KIND = A_KIND
 function entry.refuse_duplicate(self, item, name)
   local record = self._records[item]
   if record then
-    error(format("%s is already in this world (as %s)", name, A_KIND[record.kind]), 3)
+    error(format("%s is already in this world (as %s)", name, A_KIND[record[5]]), 3)
   end
 end
 
@@ -91,7 +91,7 @@ function entry.flush(self)
   for i = 1, self._n_pending do
     local record = pending[i]
     pending[i] = nil
-    local kind = record.kind
+    local kind = record[5]
     if kind == SOLID then solids.unhash(self, record)
     elseif kind == TILES then solids.remove_layer(self, record.item)
     else actors.remove(self, record) end -- an actor or a sensor

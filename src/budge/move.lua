@@ -408,7 +408,7 @@ local function filtered_phase(world, is_x, pos, cross, size, cross_size, delta, 
       if record then
         if not record.removed then
           response = response_of(filter(actor, other[i]), other[i])
-          if response ~= nil and record.kind == "sensor" then response = CROSS end
+          if response ~= nil and record[5] == "sensor" then response = CROSS end
         end
       else
         local tiles = other[i]
