@@ -478,6 +478,7 @@ function World:add(item, x, y, w, h)
   proxy._index = index
   local record = self._world._records[proxy]
   record._mark = 0
+  record[7] = item -- (what a col reports: read with the box, not through the proxy)
   proxy._record = record -- (a move reads it here, not from the world's table of records)
   self._proxies[item] = proxy
   return item
@@ -677,7 +678,7 @@ end
 -- toward (goal_x, goal_y).
 local function fill_col(col, item, record, kind, t, axis, x, y, w, h, goal_x, goal_y)
   local rx, ry, rw, rh = record[1], record[2], record[3], record[4]
-  col.item, col.other, col.type = item, record.item.item, kind
+  col.item, col.other, col.type = item, record[7], kind
   col.slide, col.bounce = nil, nil
   if t < 0 then
     detect_into(col, x, y, w, h, rx, ry, rw, rh, goal_x, goal_y)
@@ -731,12 +732,12 @@ end
 local function meet(self, other, t, axis, x, y, goal_x, goal_y)
   local item, filter = self._item, self._filter
   local answer = "slide"
-  if filter ~= nil then answer = filter(item, other.item.item) end
+  if filter ~= nil then answer = filter(item, other[7]) end
   if not answer then
     other._mark = self._pass -- ignored: passed over for the rest of this leg
     return nil
   end
-  local response = response_of(self, answer, other.item.item)
+  local response = response_of(self, answer, other[7])
   other._mark = self._stamp + MET
   local n = self._n + 1
   self._n = n
@@ -1157,7 +1158,7 @@ function World:getItems()
   local sorted = {}
   for i = 1, #list do sorted[i] = records[list[i]] end
   table.sort(sorted, added_before)
-  for i = 1, #sorted do sorted[i] = sorted[i].item.item end
+  for i = 1, #sorted do sorted[i] = sorted[i][7] end
   return sorted, #sorted
 end
 

@@ -59,6 +59,7 @@ local world = {}
 ---@field item table the user's box, or the tile layer handle
 ---@field [5] "solid"|"actor"|"sensor"|"tiles" its kind
 ---@field [6] boolean an actor moved since its cells were last brought up to date
+---@field [7] any the item again, for scans that report it (budge.bump: the game's item)
 ---@field id integer the order it was added (the last tie-breaker everywhere)
 ---@field oneway boolean a solid with wall_type "oneway"
 ---@field index? integer an actor's place in the actor list (a sensor's in the sensor list)
@@ -187,7 +188,7 @@ end
 local function new_record(self, item, kind)
   local id = self._next_id + 1
   self._next_id = id
-  local record = {0, 0, 0, 0, kind, false, item = item, id = id, oneway = false, _stamp = 0}
+  local record = {0, 0, 0, 0, kind, false, item, item = item, id = id, oneway = false, _stamp = 0}
   self._records[item] = record
   return record
 end
