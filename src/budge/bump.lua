@@ -912,7 +912,7 @@ function World:move(item, goal_x, goal_y, filter)
     local hash = self._world._actors
     local w, h = proxy.width, proxy.height
     local cx0, cy0, cx1, cy1 = hash:cells_of(x, y, w, h)
-    if cx0 < record._cx0 or cy0 < record._cy0 or cx1 > record._cx1 or cy1 > record._cy1 then
+    if cx0 < record[8] or cy0 < record[9] or cx1 > record[10] or cy1 > record[11] then
       local margin = self._margin
       hash:remove(record)
       hash:insert(record, x - margin, y - margin, w + 2 * margin, h + 2 * margin)

@@ -2,8 +2,8 @@
 --
 -- The invariant: a record inserted with the rectangle (x, y, width, height) is in every
 -- cell (cx, cy) with floor(x / size) <= cx <= floor((x + width) / size) and likewise on
--- y, exactly once each, and its _cx0.._cy1 fields name that range. Inside a cell records
--- keep insertion order. Scans visit each record once by stamping it with a number from
+-- y, exactly once each, and its [8] to [11] name that range (cx0, cy0, cx1, cy1). Inside
+-- a cell records keep insertion order. Scans visit each record once by stamping it with a number from
 -- the hash's own counter, so two hashes (two worlds) never disturb each other. The axis
 -- scan of a packed hash (the world's solids: see hash.new) reads each cell's packed copy
 -- of its records' boxes instead and stamps nothing: a record met in two cells is added
@@ -43,12 +43,13 @@ local hash = {}
 ---@field [2] number y
 ---@field [3] number width
 ---@field [4] number height
+---@field [8] integer the cells the record is in, cx0 (written by the hash; [5] to [7] are
+---the world's, see budge.Record)
+---@field [9] integer cy0
+---@field [10] integer cx1
+---@field [11] integer cy1
 ---@field oneway? boolean blocks only moves down onto its top (read by Hash:axis_stop)
 ---@field removed? boolean taken out of its world while a move runs: scans skip it
----@field package _cx0 integer the cells the record is in (written by the hash)
----@field package _cy0 integer
----@field package _cx1 integer
----@field package _cy1 integer
 ---@field package _stamp integer the last scan that visited it (written by the hash)
 ---@field package _slot integer its place in the hash's list of all records
 ---@field package _big_slot? integer its place in the list of big records, when it is one
@@ -133,7 +134,7 @@ end
 ---@param height number
 function Hash:insert(record, x, y, width, height)
   local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
-  record._cx0, record._cy0, record._cx1, record._cy1 = cx0, cy0, cx1, cy1
+  record[8], record[9], record[10], record[11] = cx0, cy0, cx1, cy1
   local all = self._all
   local slot = self._n + 1
   all[slot], record._slot, self._n = record, slot, slot
@@ -203,9 +204,9 @@ function Hash:remove(record)
   self._n = self._n - 1
   if record._big_slot then unlist(self._big, record, "_big_slot") return end
   local cells = self._cells
-  local cx0, cy0 = record._cx0, record._cy0
-  local columns = record._cx1 - cx0 + 1
-  for k = 0, columns * (record._cy1 - cy0 + 1) - 1 do -- (one flat loop: see insert)
+  local cx0, cy0 = record[8], record[9]
+  local columns = record[10] - cx0 + 1
+  for k = 0, columns * (record[11] - cy0 + 1) - 1 do -- (one flat loop: see insert)
     local row = floor(k / columns)
     unlist_cell(cells[(cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET],
       record)
@@ -222,7 +223,7 @@ end
 function Hash:moved(record, x, y, width, height)
   local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
   -- (a packed hash's cells hold a copy of the box: it is inserted again whatever moved)
-  if cx0 ~= record._cx0 or cy0 ~= record._cy0 or cx1 ~= record._cx1 or cy1 ~= record._cy1
+  if cx0 ~= record[8] or cy0 ~= record[9] or cx1 ~= record[10] or cy1 ~= record[11]
     or self._packed then
     self:remove(record)
     self:insert(record, x, y, width, height)
@@ -233,8 +234,8 @@ end
 local function list_touching(list, count, cx0, cy0, cx1, cy1, out, n)
   for i = 1, count do
     local record = list[i]
-    if record._cx0 <= cx1 and cx0 <= record._cx1 and record._cy0 <= cy1
-      and cy0 <= record._cy1 then
+    if record[8] <= cx1 and cx0 <= record[10] and record[9] <= cy1
+      and cy0 <= record[11] then
       n = n + 1
       out[n] = record
     end

@@ -188,7 +188,7 @@ end
 local function new_record(self, item, kind)
   local id = self._next_id + 1
   self._next_id = id
-  local record = {0, 0, 0, 0, kind, false, item, item = item, id = id, oneway = false, _stamp = 0}
+  local record = {0, 0, 0, 0, kind, false, item, 0, 0, 0, 0, item = item, id = id, oneway = false, _stamp = 0}
   self._records[item] = record
   return record
 end
