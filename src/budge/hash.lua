@@ -84,10 +84,10 @@ local SMALL = 8
 ---of the records: the world's solids (world.lua), whose boxes change only by a remove and
 ---an insert.
 ---Speed: the scan reads one array per cell, where each record is a table of its own
----with a hash part (an actor's 530 bytes on LuaJIT, 590 on Lua 5.4, 850 on both before
----its box, kind and mark moved to the array part: a world bench scene of 8000 boxes does
----not fit in the cache the scan reads through), and writes no stamp into the records it
----passes.
+---with a hash part (an actor's 405 bytes on LuaJIT, 530 on Lua 5.4, 850 on both before
+---its box, kind, mark and cells moved to the array part: a world bench scene of 8000
+---boxes does not fit in the cache the scan reads through), and writes no stamp into the
+---records it passes.
 ---@param cell_size number > 0, checked by the caller
 ---@param packed? boolean
 ---@return budge.Hash
