@@ -167,7 +167,8 @@ function world.new_world(opts)
     _bounds = solids.new_bounds(), _box_bounds = solids.new_bounds(),
     _actors = hash.new(cell_size), _actor_list = {}, _dirty = {}, _n_dirty = 0,
     _sensors = hash.new(cell_size), _sensor_list = {}, _sensor_count = 0,
-    _hits = hits.new_list(), _n_hits = 0, _check_hits = hits.new_list(), _round = 0, _mixed = 0,
+    _hits = hits.new_list(), _n_hits = 0, _check_hits = hits.new_list(), _round = 0,
+    _mixed = 0,
     _move_stamp = 0,
     _probe = sweep.new_probe(),
     _set = set, _cross = sweep.new_set(), _crossed = {}, _candidate_before = move.candidate_order(set), _order = {},
@@ -188,7 +189,9 @@ end
 local function new_record(self, item, kind)
   local id = self._next_id + 1
   self._next_id = id
-  local record = {0, 0, 0, 0, kind, false, item, 0, 0, 0, 0, item = item, id = id, oneway = false, _stamp = 0}
+  -- the array part (budge.Record, budge.HashRecord): the box, kind, moved, item, cells
+  local record = {0, 0, 0, 0, kind, false, item, 0, 0, 0, 0,
+    item = item, id = id, oneway = false, _stamp = 0}
   self._records[item] = record
   return record
 end
