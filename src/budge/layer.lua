@@ -377,24 +377,43 @@ function layer.tile_line(tiles, is_x, forward, pos, size, delta, cross, cross_en
   return face, hit, line, first, last
 end
 
+-- Where line `line`'s tiles are in the reach tables, for a move on the axis (is_x) and
+-- way (forward) a probe gives: the table, the index of the tile at 0 across and the step
+-- across. A move down onto a face at or below the box's leading edge `edge` (`face`: the
+-- line's) reads the table of tiles that block it there, oneway ones included.
+local function line_base(tiles, is_x, forward, line, face, edge)
+  if is_x then return tiles._reach, line * 4 + (forward and RIGHT or LEFT), tiles.cols * 4 end
+  if forward and tiles._down_any and face >= edge then
+    return tiles._down_any, line * tiles.cols + 1, 1
+  end
+  return tiles._reach, line * tiles.cols * 4 + (forward and DOWN or UP), 4
+end
+
+-- Of a box one or two tiles across (first and last, 0-based, last - first <= 1), which
+-- are on line `line` (whose reach is that line): the first of them (0-based across) and
+-- how many (1 or 2; the second, when 2, is `last`). Without a branch (on LuaJIT each is
+-- a side trace to compile): `missed` is 1 for a tile whose reach is not the line (reach
+-- and line are whole numbers), and for a box one tile across the "second" is the first
+-- again, not counted.
+local function line_pair(reach, base, step, line, first, last)
+  local missed_first = min(abs(reach[base + first * step] - line), 1)
+  local missed_last = min(abs(reach[base + last * step] - line), 1)
+  return first + missed_first * (last - first),
+    1 - missed_first + min(last - first, 1) * (1 - missed_last)
+end
+
 -- Lists the tiles on line `line` that stop the box (those whose reach is that line: the
 -- face is `face`) into probe.cols and probe.rows (1-based); returns how many. One or two
 -- tiles across are read without a loop (on LuaJIT a loop of one or two turns costs side
--- traces it could not compile: see the axis scan above; Lua 5.x takes tile_stop).
+-- traces it could not compile: see the axis scan above; Lua 5.x takes tile_stop): both
+-- are written, the second past the count when only one is on the line.
 local function list_line(tiles, probe, line, first, last, face)
   local is_x = probe.is_x
-  local reach = tiles._reach
-  local base, cross_stride
-  if is_x then
-    base, cross_stride = line * 4 + (probe.forward and RIGHT or LEFT), tiles.cols * 4
-  elseif probe.blocks_oneway and tiles._down_any and face >= probe.edge then
-    reach, base, cross_stride = tiles._down_any, line * tiles.cols + 1, 1
-  else
-    base, cross_stride = line * tiles.cols * 4 + (probe.forward and DOWN or UP), 4
-  end
+  local reach, base, cross_stride = line_base(tiles, is_x, probe.forward, line, face,
+    probe.edge)
   local out_cols, out_rows = probe.cols, probe.rows
-  local found = 0
   if last - first > 1 then
+    local found = 0
     for i = first, last do
       if reach[base + i * cross_stride] == line then
         found = found + 1
@@ -404,24 +423,35 @@ local function list_line(tiles, probe, line, first, last, face)
     end
     return found
   end
-  -- one or two tiles: without a branch (each is a side trace to compile): `missed` is 1
-  -- for a tile whose reach is not the line (reach and line are whole numbers), the second
-  -- tile is written where the first would be when the first is not on it, and for a box
-  -- one tile across the "second" is the first again, not counted
-  local missed_first = min(abs(reach[base + first * cross_stride] - line), 1)
-  local missed_last = min(abs(reach[base + last * cross_stride] - line), 1)
-  local slot = 2 - missed_first
+  local across, count = line_pair(reach, base, cross_stride, line, first, last)
   if is_x then
-    out_cols[1], out_rows[1] = line + 1, first + 1
-    out_cols[slot], out_rows[slot] = line + 1, last + 1 -- (after: it may overwrite the first)
+    out_cols[1], out_rows[1], out_cols[2], out_rows[2] = line + 1, across + 1, line + 1, last + 1
   else
-    out_cols[1], out_rows[1] = first + 1, line + 1
-    out_cols[slot], out_rows[slot] = last + 1, line + 1
+    out_cols[1], out_rows[1], out_cols[2], out_rows[2] = across + 1, line + 1, last + 1, line + 1
   end
-  return 1 - missed_first + min(last - first, 1) * (1 - missed_last)
+  return count
 end
 
 layer.list_line = list_line
+
+---Of a box one or two tiles across (first and last, 0-based across, last - first <= 1)
+---moving on the axis (is_x) and way (forward) of tile_line's answer (line, face), with
+---its leading edge at `edge`: the first tile on the line (0-based across) and how many
+---are (1 or 2: the second, when 2, is `last`). list_line's answer as values, for a caller
+---that writes them straight into its hits (move.lua's lean_phase).
+---@param tiles budge.TileLayer
+---@param is_x boolean
+---@param forward boolean
+---@param line integer
+---@param first integer
+---@param last integer
+---@param face number
+---@param edge number
+---@return integer across, integer count
+function layer.line_pair(tiles, is_x, forward, line, first, last, face, edge)
+  local reach, base, step = line_base(tiles, is_x, forward, line, face, edge)
+  return line_pair(reach, base, step, line, first, last)
+end
 
 ---Nearest tile face the probe's box meets in the layer. Returns the face coordinate
 ---and how many tiles lie on it (their 1-based col and row written to probe.cols and

@@ -30,14 +30,15 @@ local before, first_contact = sweep.before, sweep.first_contact
 local NORMAL_X, NORMAL_Y = sweep.NORMAL_X, sweep.NORMAL_Y
 local tile_face, tile_face_scan, tile_stop = layer.tile_face, layer.tile_face_scan,
   layer.tile_stop
-local tile_line, list_line = layer.tile_line, layer.list_line
+local tile_line, list_line, line_pair = layer.tile_line, layer.list_line, layer.line_pair
 local gather, clip_to_boxes, clip_to_bounds = solids.gather, solids.clip_to_boxes,
   solids.clip_to_bounds
 local gather_sensors, gather_all = solids.gather_sensors, solids.gather_all
 local response_of = hits.response
 local stop_forward, stop_backward, box_enter = sweep.stop_forward, sweep.stop_backward,
   sweep.box_enter
-local add_hit, has_tile, add_tile_hits = hits.add, hits.has_tile, hits.add_tiles
+local add_hit, has_tile, add_tile_hits, add_line_pair = hits.add, hits.has_tile,
+  hits.add_tiles, hits.add_line_pair
 local SLIDE, TOUCH, BOUNCE, CROSS = hits.SLIDE, hits.TOUCH, hits.BOUNCE, hits.CROSS
 local RULES, oneway_rule, resolve_pair = resolve.RULES, resolve.oneway, fatcross.resolve_pair
 local ceil, floor, max, sort, format = math.ceil, math.floor, math.max, table.sort,
@@ -163,10 +164,6 @@ local function lean_phase(world, is_x, pos, cross, size, cross_size, delta, done
   local face, hit, line, first, last = tile_line(tiles, is_x, forward, pos, size, delta,
     cross, cross + cross_size)
   if hit == 0 then return pos + delta end
-  local probe = world._probe
-  probe.is_x, probe.forward, probe.blocks_oneway, probe.edge = is_x, forward,
-    not is_x and forward, pos + size
-  local count = list_line(tiles, probe, line, first, last, face)
   local stop, t, side = face -- (the outcomes sweep.stop_forward / stop_backward give)
   if forward then
     if face >= pos + size then stop = before(face, size, pos) else stop = pos end
@@ -176,7 +173,16 @@ local function lean_phase(world, is_x, pos, cross, size, cross_size, delta, done
     t = (done + (pos - stop)) / path
   end
   if is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
-  add_tile_hits(world, tiles, side, probe.cols, probe.rows, count, t)
+  if last - first > 1 then -- (a box more than two tiles across: list them)
+    local probe = world._probe
+    probe.is_x, probe.forward, probe.blocks_oneway, probe.edge = is_x, forward,
+      not is_x and forward, pos + size
+    local count = list_line(tiles, probe, line, first, last, face)
+    add_tile_hits(world, tiles, side, probe.cols, probe.rows, count, t)
+  else
+    local across, count = line_pair(tiles, is_x, forward, line, first, last, face, pos + size)
+    add_line_pair(world, tiles, side, is_x, line, across, last, count, t)
+  end
   return stop
 end
 

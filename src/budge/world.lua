@@ -383,17 +383,19 @@ local function check_move(self, actor, dx, dy, method)
   return record, method_entry, filter
 end
 
--- The move itself, its hits sorted; a filter's bad return value is an error `level`
--- levels up from here.
+-- The move itself, its hits sorted (unless the move says they are in order: then they
+-- may lack the sort keys, see hits.add_line_pair); a filter's bad return value is an
+-- error `level` levels up from here.
 local function run_move(self, actor, dx, dy, filter, method_entry, level)
   self._n_hits = 0
+  local in_order = false
   if filter == nil then -- no callback can run: nothing to guard
-    method_entry.move(self, actor, dx, dy, nil, method_entry)
+    in_order = method_entry.move(self, actor, dx, dy, nil, method_entry)
   else
     guarded(self, "an actor's filter", level, method_entry.move, abandon_move, actor, dx, dy,
       filter, method_entry)
   end
-  hits.sort(self)
+  if self._n_hits > 1 and not in_order then hits.sort(self) end
 end
 
 ---Moves `actor` by (dx, dy) against the world's solids and tiles (and, as its filter
