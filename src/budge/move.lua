@@ -110,6 +110,7 @@ local function layers_stop(world, is_x, pos, cross, cross_end, size, delta, done
   local first_hit, forward = world._n_hits, delta > 0
   local layers, probe = world._layers, world._probe
   local cols, rows = probe.cols, probe.rows
+  local keyed = layers[2] ~= nil -- (one layer: the move's hits are in order, never sorted)
   local best
   for k = 1, #layers do -- (no callback runs in this move: no layer is removed during it)
     local tiles = layers[k]
@@ -124,22 +125,22 @@ local function layers_stop(world, is_x, pos, cross, cross_end, size, delta, done
         local side
         if is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
         local t = (done + (forward and stop - pos or pos - stop)) / path
-        local id, round = world._records[tiles].id, world._round
         local list, n = world._hits, world._n_hits
-        local left, top, tile_width, tile_height = tiles.x, tiles.y, tiles.tile_width,
-          tiles.tile_height
         for c = 1, count do -- (hits.add written out: a call less per tile met)
           local col, row = cols[c], rows[c]
           local hit = list[n + c]
           if hit == nil then
             world._n_hits = n + c - 1
-            add_hit(world, tiles, side, col, row, top + (row - 1) * tile_height,
-              left + (col - 1) * tile_width, id, SLIDE, t)
+            add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
+              tiles.x + (col - 1) * tiles.tile_width, world._records[tiles].id, SLIDE, t)
           else
             hit.other, hit.side, hit.col, hit.row, hit.response, hit.t = tiles, side, col, row,
               SLIDE, t
-            hit._top, hit._left = top + (row - 1) * tile_height, left + (col - 1) * tile_width
-            hit._id, hit._round = id, round
+            if keyed then -- (hits.add_line_pair says why one layer's need no sort keys)
+              hit._top, hit._left = tiles.y + (row - 1) * tiles.tile_height,
+                tiles.x + (col - 1) * tiles.tile_width
+              hit._id, hit._round = world._records[tiles].id, world._round
+            end
           end
         end
         world._n_hits = n + count
