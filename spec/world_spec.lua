@@ -186,6 +186,36 @@ describe("world:add_tiles", function()
     end
   end)
 
+  it("gives world:check the hits world:move gives in a world of one layer, in their order", function()
+    -- (those hits carry no sort keys, being in order: neither call may sort them; two
+    -- layers, or a solid, take the paths that do)
+    local grid = {}
+    for row = 1, 8 do
+      grid[row] = {}
+      for col = 1, 8 do grid[row][col] = (row == 8 or col == 8) and 1 or 0 end
+    end
+    local function contacts(world, actor, call)
+      local x, y, n, list = call(world, actor, 30, 30)
+      local found = {x, y, n}
+      for i = 1, n do
+        local hit = list[i]
+        found[#found + 1] = {hit.col, hit.row, hit.side, hit.t * 60, hit.response}
+      end
+      return found
+    end
+    local expected = {92, 92, 4, {8, 6, "right", 2, "slide"}, {8, 7, "right", 2, "slide"},
+      {6, 8, "floor", 32, "slide"}, {7, 8, "floor", 32, "slide"}}
+    for _, extra in ipairs({"none", "layer", "solid"}) do
+      local world = budge.new_world()
+      world:add_tiles(grid, 16, 16)
+      if extra == "layer" then world:add_tiles({{1}}, 16, 16, {x = 1000}) end
+      if extra == "solid" then world:add_solid(box(1000, 1000, 8, 8)) end
+      local actor = world:add_actor(box(90, 90, 20, 20))
+      assert.same(expected, contacts(world, actor, world.check))
+      assert.same(expected, contacts(world, actor, world.move))
+    end
+  end)
+
   it("rereads its grid on update", function()
     local world = budge.new_world()
     local grid = {{false}}
