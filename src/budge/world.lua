@@ -395,7 +395,7 @@ local function run_move(self, actor, dx, dy, filter, method_entry, level)
     guarded(self, "an actor's filter", level, method_entry.move, abandon_move, actor, dx, dy,
       filter, method_entry)
   end
-  if self._n_hits > 1 and not in_order then hits.sort(self) end
+  if not in_order and self._n_hits > 1 then hits.sort(self) end
 end
 
 ---Moves `actor` by (dx, dy) against the world's solids and tiles (and, as its filter
@@ -453,7 +453,9 @@ function World:move(actor, dx, dy, method)
     guarded(self, "an actor's filter", 2, method_entry.move, abandon_move, actor, dx, dy,
       filter, method_entry)
   end
-  if self._n_hits > 1 and not in_order then hits.sort(self) end
+  -- (in_order first: on a path where the move returns a constant true LuaJIT compiles no
+  -- test of the count, which differs from move to move)
+  if not in_order and self._n_hits > 1 then hits.sort(self) end
   record[1], record[2] = actor.x, actor.y
   local width, height = actor.width, actor.height
   if width ~= record[3] or height ~= record[4] then
