@@ -40,6 +40,7 @@ local stop_forward, stop_backward, box_enter = sweep.stop_forward, sweep.stop_ba
 local add_hit, has_tile, add_tile_hits, add_line_pair = hits.add, hits.has_tile,
   hits.add_tiles, hits.add_line_pair
 local SLIDE, TOUCH, BOUNCE, CROSS = hits.SLIDE, hits.TOUCH, hits.BOUNCE, hits.CROSS
+local NX, NY = hits.NX, hits.NY
 local RULES, oneway_rule, resolve_pair = resolve.RULES, resolve.oneway, fatcross.resolve_pair
 local ceil, floor, max, sort, format = math.ceil, math.floor, math.max, table.sort,
   string.format
@@ -126,6 +127,7 @@ local function layers_stop(world, is_x, pos, cross, cross_end, size, delta, done
         if is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
         local t = (done + (forward and stop - pos or pos - stop)) / path
         local list, n = world._hits, world._n_hits
+        local nx, ny = NX[side], NY[side]
         for c = 1, count do -- (hits.add written out: a call less per tile met)
           local col, row = cols[c], rows[c]
           local hit = list[n + c]
@@ -136,6 +138,7 @@ local function layers_stop(world, is_x, pos, cross, cross_end, size, delta, done
           else
             hit.other, hit.side, hit.col, hit.row, hit.response, hit.t = tiles, side, col, row,
               SLIDE, t
+            hit.nx, hit.ny = nx, ny
             if keyed then -- (hits.add_line_pair says why one layer's need no sort keys)
               hit._top, hit._left = tiles.y + (row - 1) * tiles.tile_height,
                 tiles.x + (col - 1) * tiles.tile_width
