@@ -588,9 +588,11 @@ function Hash:axis_stop(x, y, width, height, probe)
   local cells = self._cells
   local columns = cx1 - cx0 + 1
   local count = columns * (cy1 - cy0 + 1)
-  -- fewer records than cells, or only a few records: scan them all (bounded work; and
-  -- LuaJIT shaping: a world of a few moving platforms takes one path, not two)
-  if count > self._n or self._n <= SMALL then
+  -- only a few records, or fewer records than cells: scan them all (bounded work; and
+  -- LuaJIT shaping: a world of a few moving platforms takes one path, not two, and tests
+  -- its count of records first, the same at every move, so that no test of the count of
+  -- cells, which differs from move to move, is compiled for it)
+  if self._n <= SMALL or count > self._n then
     scan_cell(self._all, stamp, probe)
     return
   end
