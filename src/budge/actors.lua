@@ -145,4 +145,32 @@ function actors.near(world, x, y, width, height)
   return n
 end
 
+-- actors.near on LuaJIT: the four comparisons as one test of the least difference (for
+-- finite numbers b - a >= 0 exactly when a <= b: hash.lua's scan_packs says why), which
+-- math.min compiles with no branch: each comparison an actor failed was a side trace
+-- carrying the rest of a platform's move (make bench-jit's platformer: 352 -> 308 KB of
+-- machine code with a budget that never runs out, median of 9 runs each, interleaved,
+-- 2026-12-02). Lua 5.1-5.4 keep the comparisons: there math.min is a call into C (and a
+-- test of which form to take, in the loop, made `lua5.4 bench/platforms.lua` run 25% more
+-- instructions a frame, under cachegrind).
+if rawget(_G, "jit") then
+  local min = math.min
+  function actors.near(world, x, y, width, height)
+    local near, list = world._near, world._actor_list
+    local x1, y1 = x + width, y + height
+    local n = 0
+    for i = 1, #list do
+      local record = list[i]
+      local actor = record.item
+      local ax, ay = actor.x, actor.y
+      if min(x1 - ax, ax + actor.width - x, y1 - ay, ay + actor.height - y) >= 0 then
+        n = n + 1
+        near[n] = record
+      end
+    end
+    for i = n + 1, #near do near[i] = nil end
+    return n
+  end
+end
+
 return actors
