@@ -572,14 +572,22 @@ local function leg_times(self, record)
     (ry - self._leg_y1) / self._leg_dy, (ry + record[4] - self._leg_y) / self._leg_dy
 end
 
+-- Past the region's last record, nearest's loop (LuaJIT) reads PAD of these: a record
+-- no leg overlaps and every leg has passed (its box starts at +inf, its mark is +inf).
+local PAD = 2
+local SENTINEL = {HUGE, HUGE, 0, 0, _mark = HUGE}
+
 -- Makes the move's region (see plan_move) hold what the leg's rectangle overlaps: the
 -- records the first leg's rectangle overlaps, looked up in the hash again only when a
--- leg leaves that rectangle (a bounce may; a slide never does).
+-- leg leaves that rectangle (a bounce may; a slide never does). Then PAD sentinels.
 local function cover(self, left, top, right, bottom)
   if left < self._region_left or top < self._region_top or right > self._region_right
     or bottom > self._region_bottom then
-    self._region_n = self._world._actors:collect_overlapping(left, top, right - left,
-      bottom - top, self._region, 0)
+    local region = self._region
+    local n = self._world._actors:collect_overlapping(left, top, right - left,
+      bottom - top, region, 0)
+    self._region_n = n
+    region[n + 1], region[n + 2] = SENTINEL, SENTINEL -- (PAD of them: no loop)
     self._region_left, self._region_top = left, top
     self._region_right, self._region_bottom = right, bottom
   end
@@ -646,10 +654,19 @@ end
 -- run_leg keeps no local of the leg's live across its loop. 100 items, 10 fresh runs each,
 -- interleaved, 2026-12-02: 0 to 500 of those aborts a run -> none, 880 -> 751 ns per move
 -- (median; runs whose machine code overflows LuaJIT's budget still take 1.2 to 1.7 us).
+-- The loop runs PAD turns past the region (sentinels that fail the first test): LuaJIT
+-- starts a loop's own trace at a turn's end and throws it away when the next turn is the
+-- last ("leaving loop in root trace"); after two such aborts it unrolls the loop into
+-- every trace that runs it instead, and a region holds 2 to 7 records, so in 4 runs of 10
+-- that happened and the move compiled 2 to 3 times the machine code, and ran up to twice
+-- as slow. With two more turns the loop's own trace forms (`luajit bench/world.lua --way
+-- bump_boxes`, unlimited budget, 200 frames, fresh runs interleaved, 2026-12-03: 100
+-- items 777 KB (438-1006) -> 295 (269-310), 10 runs; 1000 items 1595 KB (608-2426) -> 397
+-- (332-422) and 1036 -> 804 ns per move, 6 runs).
 local function nearest(self)
   local region = self._region
   self._best, self._best_t = nil, HUGE
-  for i = 1, self._region_n do
+  for i = 1, self._region_n + PAD do
     local record = region[i]
     local rx, ry = record[1], record[2]
     if min(self._leg_right - rx, rx + record[3] - self._leg_left, self._leg_bottom - ry,
