@@ -508,7 +508,7 @@ local function sensors_crossed(world, actor, x0, y0, x1, y1, dx, dy, path)
   if dy ~= 0 then
     world._round = 2
     report_crossings(world, crossing, false, dy > 0, y0, y1, height, x1, x1 + width,
-      dx < 0 and -dx or dx, path, -HUGE, HUGE)
+      (dx < 0 and -dx or dx) + 0, path, -HUGE, HUGE)
   end
 end
 
@@ -579,7 +579,7 @@ local function move_filtered(world, actor, dx, dy, filter)
   local probe = world._probe
   probe.actor, probe.filter = actor, filter
   local x, y = actor.x, actor.y
-  local adx = dx < 0 and -dx or dx
+  local adx = (dx < 0 and -dx or dx) + 0 -- (+ 0: |-0| is +0, as math.abs gives it)
   local path = adx + (dy < 0 and -dy or dy) -- x takes the first adx of the path
   local response
   if dx ~= 0 then
@@ -643,8 +643,8 @@ local function move_axis_sweep(world, actor, dx, dy, filter)
     if dy ~= 0 then
       world._round = 2
       local width, height = actor.width, actor.height
-      y = layers_stop(world, false, y, x, x + width, height, dy, dx < 0 and -dx or dx, path)
-        or y + dy
+      y = layers_stop(world, false, y, x, x + width, height, dy, (dx < 0 and -dx or dx) + 0,
+        path) or y + dy
     end
     actor.x, actor.y = x, y
     return #world._layers < 2 -- (no solid and no sensor on this path)
@@ -680,8 +680,9 @@ local function move_axis_sweep(world, actor, dx, dy, filter)
   end
   if dy ~= 0 then
     world._round = 2
-    probe.before = BRANCH_FREE and abs(dx) or (dx < 0 and -dx or dx) -- (x takes the first
-    -- |dx| of the path)
+    -- (x takes the first |dx| of the path; + 0: |-0| is +0 on every interpreter, as
+    -- math.abs gives it, so a contact at the start of the y phase has t = +0, not -0)
+    probe.before = BRANCH_FREE and abs(dx) or (dx < 0 and -dx or dx) + 0
     y = axis_phase(world, false, y, x, actor.height, actor.width, dy)
   end
   if world._sensor_count > 0 then
