@@ -3,6 +3,16 @@ local budge = require("budge")
 local box = require("fixtures.box")
 local garbage = require("fixtures.garbage")
 
+-- An 8x8 grid of tiles, solid where solid(row, col) says.
+local function grid8(solid)
+  local grid = {}
+  for row = 1, 8 do
+    grid[row] = {}
+    for col = 1, 8 do grid[row][col] = solid(row, col) and 1 or 0 end
+  end
+  return grid
+end
+
 local function position(world, actor, dx, dy, method)
   local x, y = world:move(actor, dx, dy, method)
   return {x, y}
@@ -189,11 +199,7 @@ describe("world:add_tiles", function()
   it("gives world:check the hits world:move gives in a world of one layer, in their order", function()
     -- (those hits carry no sort keys, being in order: neither call may sort them; two
     -- layers, or a solid, take the paths that do)
-    local grid = {}
-    for row = 1, 8 do
-      grid[row] = {}
-      for col = 1, 8 do grid[row][col] = (row == 8 or col == 8) and 1 or 0 end
-    end
+    local grid = grid8(function(row, col) return row == 8 or col == 8 end)
     local function contacts(world, actor, call)
       local x, y, n, list = call(world, actor, 30, 30)
       local found = {x, y, n}
@@ -220,11 +226,7 @@ describe("world:add_tiles", function()
     -- a "swept" move writes sort keys (x phase rows 6 and 7 in records 1 and 2), a second
     -- one rewrites record 1 as its y phase; the default move then writes two tiles met at
     -- the same t without keys: sorted by the stale ones, row 7 would come first
-    local grid = {}
-    for row = 1, 8 do
-      grid[row] = {}
-      for col = 1, 8 do grid[row][col] = (col == 8 or row == 8) and 1 or 0 end
-    end
+    local grid = grid8(function(row, col) return row == 8 or col == 8 end)
     local world = budge.new_world()
     world:add_tiles(grid, 16, 16)
     local actor = world:add_actor(box(98, 80, 12, 20))
@@ -246,13 +248,7 @@ describe("world:add_tiles", function()
   it("gives a tile's hits the face's normal, whichever side the record held before", function()
     -- (the records are reused from move to move: each side's writer must set nx and ny;
     -- one layer, two layers and a solid take the three writers)
-    local grid = {}
-    for row = 1, 8 do
-      grid[row] = {}
-      for col = 1, 8 do
-        grid[row][col] = (row == 1 or row == 8 or col == 1 or col == 8) and 1 or 0
-      end
-    end
+    local grid = grid8(function(row, col) return row == 1 or row == 8 or col == 1 or col == 8 end)
     for _, extra in ipairs({"none", "layer", "solid"}) do
       local world = budge.new_world()
       world:add_tiles(grid, 16, 16)

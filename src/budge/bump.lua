@@ -18,6 +18,7 @@
 
 local here = (...):match("^(.*)%.[^%.]+$")
 local box = require(here .. ".box")
+local hash_module = require(here .. ".hash")
 local sweep = require(here .. ".sweep")
 local entry = require(here .. ".entry")
 local world_module = require(here .. ".world")
@@ -573,9 +574,10 @@ local function leg_times(self, record)
 end
 
 -- Past the region's last record, nearest's loop (LuaJIT) reads PAD of these: a record
--- no leg overlaps and every leg has passed (its box starts at +inf, its mark is +inf).
+-- no leg overlaps and every leg has passed (its box starts at +inf, its mark is +inf;
+-- hash.lua says why the padding).
 local PAD = 2
-local SENTINEL = {HUGE, HUGE, 0, 0, _mark = HUGE}
+local SENTINEL = hash_module.SENTINEL
 
 -- Makes the move's region (see plan_move) hold what the leg's rectangle overlaps: the
 -- records the first leg's rectangle overlaps, looked up in the hash again only when a
@@ -654,15 +656,13 @@ end
 -- run_leg keeps no local of the leg's live across its loop. 100 items, 10 fresh runs each,
 -- interleaved, 2026-12-02: 0 to 500 of those aborts a run -> none, 880 -> 751 ns per move
 -- (median; runs whose machine code overflows LuaJIT's budget still take 1.2 to 1.7 us).
--- The loop runs PAD turns past the region (sentinels that fail the first test): LuaJIT
--- starts a loop's own trace at a turn's end and throws it away when the next turn is the
--- last ("leaving loop in root trace"); after two such aborts it unrolls the loop into
--- every trace that runs it instead, and a region holds 2 to 7 records, so in 4 runs of 10
--- that happened and the move compiled 2 to 3 times the machine code, and ran up to twice
--- as slow. With two more turns the loop's own trace forms (`luajit bench/world.lua --way
--- bump_boxes`, unlimited budget, 200 frames, fresh runs interleaved, 2026-12-03: 100
--- items 777 KB (438-1006) -> 295 (269-310), 10 runs; 1000 items 1595 KB (608-2426) -> 397
--- (332-422) and 1036 -> 804 ns per move, 6 runs).
+-- The loop runs PAD turns past the region (sentinels that fail the first test), so that
+-- LuaJIT keeps a trace of its own for it (hash.lua's SENTINEL says why): a region holds 2
+-- to 7 records, and without them in 4 runs of 10 the loop was unrolled into every move,
+-- which compiled 2 to 3 times the machine code and ran up to twice as slow. With them
+-- (`luajit bench/world.lua --way bump_boxes`, unlimited budget, 200 frames, fresh runs
+-- interleaved, 2026-12-03): 100 items 777 KB (438-1006) -> 295 (269-310), 10 runs; 1000
+-- items 1595 KB (608-2426) -> 397 (332-422) and 1036 -> 804 ns per move, 6 runs.
 local function nearest(self)
   local region = self._region
   self._best, self._best_t = nil, HUGE

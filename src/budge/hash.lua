@@ -41,8 +41,10 @@ local hash = {}
 -- at the default one (medians of 9, fresh runs interleaved, 2026-12-03); the example
 -- game (`bench/game.lua --way default`, 5 runs) 33.6 -> 29.6 us per frame, 287 -> 261
 -- KB. Lua 5.1-5.4 read n records (PAD 0). budge.bump's nearest does the same.
-local SENTINEL = {math.huge, math.huge, 0, 0, _stamp = 0}
+-- (budge.bump's nearest pads its region with the same record: its mark is +inf too)
+local SENTINEL = {math.huge, math.huge, 0, 0, _stamp = 0, _mark = math.huge}
 local PAD = BRANCH_FREE and 2 or 0
+hash.SENTINEL = SENTINEL
 
 ---What the hash reads and writes on a record. A record carries a copy of its box in its
 ---array part ([1] x, [2] y, [3] width, [4] height), read by the scans that test boxes
@@ -187,8 +189,8 @@ function Hash:insert(record, x, y, width, height)
   end
 end
 
-local function unlist(list, record, field)
-  local slot, count = record[field], #list
+local function unlist(list, record, field, count)
+  local slot = record[field]
   local last = list[count]
   list[slot], last[field] = last, slot
   list[count] = nil
@@ -217,13 +219,10 @@ end
 ---@param record budge.HashRecord
 function Hash:remove(record)
   local all, n = self._all, self._n
-  local slot = record._slot
-  local last = all[n]
-  all[slot], last._slot = last, slot
+  unlist(all, record, "_slot", n)
   all[n], all[n + 2] = SENTINEL, nil -- (the two sentinels move down one)
-  record._slot = nil
   self._n = n - 1
-  if record._big_slot then unlist(self._big, record, "_big_slot") return end
+  if record._big_slot then unlist(self._big, record, "_big_slot", #self._big) return end
   local cells = self._cells
   local cx0, cy0 = record[8], record[9]
   local columns = record[10] - cx0 + 1
