@@ -568,6 +568,75 @@ describe("two worlds", function()
   end)
 end)
 
+describe("the world's copy of each actor's box", function()
+  -- world:move writes where it left its actor into the world's copy by the actor's slot
+  -- (its place in the actor list) and the record catches up at the world's next other call
+  -- (actors.settle); a removal moves the last actor into the gap, with its copy.
+  local function where(world, actor)
+    local found, n = world:query_point(actor.x + actor.width / 2, actor.y + actor.height / 2)
+    for i = 1, n do if found[i] == actor then return {actor.x, actor.y} end end
+    return false
+  end
+
+  it("follows the last actor into a gap a filter made mid-move", function()
+    local world = budge.new_world({cell_size = 32})
+    local glass = world:add_solid(box(40, 200, 8, 8))
+    local actors = {}
+    for i = 1, 4 do actors[i] = world:add_actor(box(i * 100, 200, 10, 10)) end
+    world:move(actors[4], 7, 3) -- moved, its record not yet caught up
+    world:move(actors[3], -5, 0)
+    actors[1].filter = function(_, other)
+      if other == glass and world:has(actors[2]) then world:remove(actors[2]) end
+      return false
+    end
+    world:move(actors[1], -100, -200) -- passes the glass; the filter removes actors[2]
+    assert.same({false, true}, {world:has(actors[2]), world:has(actors[4])})
+    assert.same({{0, 0}, {295, 200}, {407, 203}},
+      {where(world, actors[1]), where(world, actors[3]), where(world, actors[4])})
+    assert.same({{}, 0}, {world:query_point(405, 205)}) -- where actors[4] was
+    -- the copy a move compares against is the moved actor's own: a bad value is still caught
+    actors[4].x = 0 / 0
+    assert.has_error(function() world:move(actors[4], 1, 0) end,
+      "actor.x must be a finite number, got nan")
+    actors[4].x = 407
+    assert.same({408, 203}, position(world, actors[4], 1, 0))
+    assert.same({408, 203}, where(world, actors[4]))
+  end)
+
+  it("lets a filter remove its own actor: the move returns where it ended, nothing keeps it", function()
+    local world = budge.new_world({cell_size = 32})
+    local glass = world:add_solid(box(40, 0, 8, 8))
+    local mover = world:add_actor(box(0, 0, 10, 10))
+    local last = world:add_actor(box(300, 300, 10, 10))
+    world:move(last, 10, 0)
+    mover.filter = function(actor, other)
+      if other == glass and world:has(actor) then world:remove(actor) end
+      return false
+    end
+    assert.same({100, 0}, position(world, mover, 100, 0))
+    assert.same({false, {310, 300}}, {world:has(mover), where(world, last)})
+    assert.same({320, 300}, position(world, last, 10, 0))
+    assert.same({{glass, last}, 2}, {world:query_rect(0, 0, 1000, 1000)})
+  end)
+
+  it("takes a size the game or a filter changed, and ignores one that is not a size", function()
+    local world = budge.new_world({cell_size = 32})
+    world:add_solid(box(40, 0, 8, 8)) -- glass: the filter answers for it
+    local actor = world:add_actor(box(0, 0, 10, 10))
+    actor.width = 20
+    world:move(actor, 5, 0)
+    assert.same({{actor}, 1}, {world:query_point(24, 5)})
+    actor.filter = function(a) a.height = 30 return false end
+    world:move(actor, 50, 0)
+    assert.same({{actor}, 1}, {world:query_point(60, 25)})
+    actor.filter = function(a) a.height = -1 return false end
+    world:move(actor, -10, 0) -- the world keeps the last size it checked
+    assert.same({{actor}, 1}, {world:query_point(50, 25)})
+    assert.has_error(function() world:move(actor, 1, 0) end,
+      "actor.height must be a finite number >= 0, got -1")
+  end)
+end)
+
 describe("queries", function()
   local world, a, b, actor, layer
   before_each(function()

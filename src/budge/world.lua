@@ -99,6 +99,15 @@ local world = {}
 ---@field package _sensor_count integer how many sensors
 ---@field package _dirty budge.Record[] actors moved since the last rehash
 ---@field package _n_dirty integer
+---@field package _slot_of table<table, integer> each actor's slot: its place in _actor_list
+---@field package _ax number[] the world's copy of each actor's box by slot, as world:move
+---left it (the record's copy until actors.settle)
+---@field package _ay number[]
+---@field package _aw number[]
+---@field package _ah number[]
+---@field package _astale boolean[] by slot: moved by world:move since actors.settle
+---@field package _stale budge.Record[] those actors' records
+---@field package _n_stale integer
 ---@field package _hits budge.Hit[] the last move's contacts (reused)
 ---@field package _n_hits integer
 ---@field package _check_hits budge.Hit[] the last check's contacts (swapped in while it runs)
@@ -166,6 +175,8 @@ function world.new_world(opts)
     _solids = hash.new(cell_size, true), _solid_count = 0, _layers = {},
     _bounds = solids.new_bounds(), _box_bounds = solids.new_bounds(),
     _actors = hash.new(cell_size), _actor_list = {}, _dirty = {}, _n_dirty = 0,
+    _slot_of = {}, _ax = {}, _ay = {}, _aw = {}, _ah = {}, _astale = {}, _stale = {},
+    _n_stale = 0,
     _sensors = hash.new(cell_size), _sensor_list = {}, _sensor_count = 0,
     _hits = hits.new_list(), _n_hits = 0, _check_hits = hits.new_list(), _round = 0,
     _mixed = 0,
@@ -413,18 +424,19 @@ function World:move(actor, dx, dy, method)
   -- through those two calls and the phases' own, the world bench's tile moves took 2540
   -- ns instead of 2237 on Lua 5.4 (`lua5.4 bench/world.lua --profile tiles --frames 100`,
   -- median of 5, 2026-12-01).
-  local record = self._records[actor]
-  if record == nil or record[5] ~= ACTOR then check_move(self, actor, dx, dy, method) end
+  local slot = self._slot_of[actor]
+  if slot == nil then check_move(self, actor, dx, dy, method) end
+  local ax, ay, aw, ah = self._ax, self._ay, self._aw, self._ah
   do -- (LuaJIT: each local still in scope at the move is carried into its side traces)
     -- check_box's and check_number's tests written out (x - x is 0 for a finite number
     -- only); the functions run only to raise their error. Through them, 9 calls per move:
     -- `lua5.4 bench/world.lua --way tiles --count 1000 --frames 60` took 2369 ns per move
-    -- instead of 2189 (median of 5, 2026-12-01). A box equal to the record's copy (the
-    -- box as the world last checked it, or placed it) is not checked again: four
+    -- instead of 2189 (median of 5, 2026-12-01). A box equal to the world's copy (the
+    -- box as the world last checked it, or placed it: actors.lua) is not checked again: four
     -- comparisons instead of four calls to type on Lua 5.x (same command, 5 fresh runs
     -- each, interleaved, 2026-12-02: 1574 ns per move against 1646 with the checks).
     local x, y, width, height = actor.x, actor.y, actor.width, actor.height
-    if (x ~= record[1] or y ~= record[2] or width ~= record[3] or height ~= record[4])
+    if (x ~= ax[slot] or y ~= ay[slot] or width ~= aw[slot] or height ~= ah[slot])
       and (type(x) ~= "number" or type(y) ~= "number" or type(width) ~= "number"
         or type(height) ~= "number" or x - x ~= 0 or y - y ~= 0 or width - width ~= 0
         or height - height ~= 0 or width < 0 or height < 0) then
@@ -452,16 +464,19 @@ function World:move(actor, dx, dy, method)
   else
     guarded(self, "an actor's filter", 2, method_entry.move, abandon_move, actor, dx, dy,
       filter, method_entry)
+    -- (the filter may have removed an actor, this one or the one whose slot moved here)
+    slot = self._slot_of[actor]
+    if slot == nil then return actor.x, actor.y, self._n_hits, self._hits end
   end
   -- (in_order first: on a path where the move returns a constant true LuaJIT compiles no
   -- test of the count, which differs from move to move)
   if not in_order and self._n_hits > 1 then hits.sort(self) end
-  record[1], record[2] = actor.x, actor.y
+  ax[slot], ay[slot] = actor.x, actor.y
   local width, height = actor.width, actor.height
-  if width ~= record[3] or height ~= record[4] then
-    actors.copy_size(record, width, height)
+  if width ~= aw[slot] or height ~= ah[slot] then
+    actors.copy_size(self, slot, width, height)
   end
-  if not record[6] then actors.moved(self, record) end
+  if not self._astale[slot] then actors.stale(self, slot) end
   return actor.x, actor.y, self._n_hits, self._hits
 end
 
