@@ -603,6 +603,18 @@ describe("the world's copy of each actor's box", function()
     assert.same({408, 203}, where(world, actors[4]))
   end)
 
+  it("keeps up with the actor that takes a removed moved actor's slot", function()
+    local world = budge.new_world({cell_size = 32})
+    local a = world:add_actor(box(0, 0, 10, 10))
+    world:add_actor(box(100, 0, 10, 10))
+    local b = world:add_actor(box(200, 0, 10, 10))
+    world:move(a, 3, 0) -- a moved (noted), b not
+    world:remove(a) -- b takes a's slot
+    assert.same({250, 0}, position(world, b, 50, 0))
+    assert.same({{b}, 1}, {world:query_point(255, 5)})
+    assert.same({{}, 0}, {world:query_point(205, 5)})
+  end)
+
   it("lets a filter remove its own actor: the move returns where it ended, nothing keeps it", function()
     local world = budge.new_world({cell_size = 32})
     local glass = world:add_solid(box(40, 0, 8, 8))

@@ -7,9 +7,9 @@
 -- so a field the game overwrote since is never read, and a move whose actor's box equals
 -- the copy need not check it again.
 -- world:move touches no record: it finds the actor's slot (its place in the actor list)
--- and writes the box it leaves into the world's copy by slot (_ax, _ay, _aw, _ah: four
--- flat arrays), noting the slot once; the records catch up (actors.settle) when any other
--- method of the world runs, or a move gathers actors (actors.rehash). Speed: a record is a
+-- and writes the box it leaves into the world's copy by slot (_abox: one flat array, five
+-- entries a slot), noting the slot once; the records catch up with their cells (actors.rehash)
+-- before a query, world:contacts, a removal, or a move that gathers actors. Speed: a record is a
 -- table of its own, its box three or four cache lines away from the next actor's, and
 -- the lookup of it by actor another; with the flat arrays cachegrind's model of a 512 KB
 -- cache (`valgrind --tool=cachegrind --LL=524288,8,64`, 120 minus 60 frames of `bench/
@@ -44,20 +44,20 @@ function actors.insert(world, record)
   actors.copy(record)
   if record[5] == "actor" then
     world._slot_of[record.item] = index
-    world._astale[index] = false
+    world._abox[index * 5] = false
     actors.mirror(world, record)
   end
   record._fx, record._fy = record[1], record[2]
   hash:insert(record, record[1], record[2], record[3], record[4])
 end
 
----Writes an actor's record's box into the world's copy by slot (see actors.settle).
+---Writes an actor's record's box into the world's copy by slot (see actors.rehash).
 ---@param world budge.World
 ---@param record budge.Record an actor's, in the world
 function actors.mirror(world, record)
-  local slot = record.index
-  world._ax[slot], world._ay[slot], world._aw[slot], world._ah[slot] = record[1], record[2],
-    record[3], record[4]
+  local abox, at = world._abox, record.index * 5
+  abox[at - 4], abox[at - 3], abox[at - 2], abox[at - 1] = record[1], record[2], record[3],
+    record[4]
 end
 
 ---Copies the actor's box into its record (after the box was checked).
@@ -71,8 +71,9 @@ end
 ---@param world budge.World
 ---@param record budge.Record
 function actors.remove(world, record)
-  -- (settled first: no slot is then marked stale, so none is left marked for another actor)
-  if world._n_stale > 0 then actors.settle(world) end
+  -- (brought up to date first: no slot is then marked, so none is left marked for another
+  -- actor)
+  if world._n_stale > 0 then actors.rehash(world) end
   local list, hash = home(world, record)
   hash:remove(record)
   local index, count = record.index, #list
@@ -82,9 +83,11 @@ function actors.remove(world, record)
   list[count] = nil
   record.index = nil
   if record[5] == "actor" then -- the last actor's slot moves into the gap
-    local ax, ay, aw, ah, astale = world._ax, world._ay, world._aw, world._ah, world._astale
-    ax[index], ay[index], aw[index], ah[index] = ax[count], ay[count], aw[count], ah[count]
-    ax[count], ay[count], aw[count], ah[count], astale[count] = nil, nil, nil, nil, nil
+    local abox, at, from = world._abox, index * 5, count * 5
+    for k = -4, 0 do
+      abox[at + k] = abox[from + k]
+      abox[from + k] = nil
+    end
     world._slot_of[record.item] = nil
     if last ~= record then world._slot_of[last.item] = index end
   end
@@ -94,12 +97,13 @@ end
 ---still a size (a filter may have changed it during the move; the next move checks it,
 ---see World:move); the caller marks the slot stale.
 ---@param world budge.World
----@param slot integer
+---@param at integer 5 * the actor's slot
 ---@param width any
 ---@param height any
-function actors.copy_size(world, slot, width, height)
+function actors.copy_size(world, at, width, height)
   if is_size(width) and is_size(height) then
-    world._aw[slot], world._ah[slot] = width, height
+    local abox = world._abox
+    abox[at - 2], abox[at - 1] = width, height
   end
 end
 
@@ -115,47 +119,15 @@ function actors.placed(world, record)
   world._actors:moved(record, record[1], record[2], record[3], record[4])
 end
 
----Notes that an actor moved: its cells are brought up to date by actors.rehash.
+---Marks the actor whose entries in world._abox end at `at` as moved by world:move: its
+---record and cells are brought up to date by actors.rehash.
 ---@param world budge.World
----@param record budge.Record
-function actors.moved(world, record)
-  if not record[6] then -- (a record's [6]: moved since its cells were brought up to date)
-    record[6] = true
-    local n = world._n_dirty + 1
-    world._dirty[n] = record
-    world._n_dirty = n
-  end
-end
-
----Marks the actor in `slot` as moved by world:move: its record is brought up to date by
----actors.settle.
----@param world budge.World
----@param slot integer
-function actors.stale(world, slot)
-  world._astale[slot] = true
+---@param at integer 5 * the actor's slot
+function actors.stale(world, at)
+  world._abox[at] = true
   local n = world._n_stale + 1
-  world._stale[n] = world._actor_list[slot]
+  world._stale[n] = world._actor_list[at / 5]
   world._n_stale = n
-end
-
----Copies the boxes world:move left in the world's copy by slot into the records of the
----actors it moved, and notes them for actors.rehash. Every public method but move runs
----it first (entry.enter), and actors.rehash does.
----@param world budge.World
-function actors.settle(world)
-  local stale, astale = world._stale, world._astale
-  local ax, ay, aw, ah = world._ax, world._ay, world._aw, world._ah
-  for i = 1, world._n_stale do
-    local record = stale[i]
-    stale[i] = nil
-    local slot = record.index
-    if slot then -- still in the world
-      astale[slot] = false
-      record[1], record[2], record[3], record[4] = ax[slot], ay[slot], aw[slot], ah[slot]
-      actors.moved(world, record)
-    end
-  end
-  world._n_stale = 0
 end
 
 ---Re-registers an actor's (or a sensor's) record in the cells of its box now.
@@ -168,20 +140,25 @@ function actors.rehash_one(world, record)
   hash:moved(record, record[1], record[2], record[3], record[4])
 end
 
----Brings the cells of the actors moved since the last call up to date.
+---Brings the records and the cells of the actors world:move moved since the last call up
+---to date, from the world's copy by slot. Queries and moves that gather actors run it
+---first, and so do world:contacts and a removal.
 ---@param world budge.World
 function actors.rehash(world)
-  if world._n_stale > 0 then actors.settle(world) end
-  local dirty, hash = world._dirty, world._actors
-  for i = 1, world._n_dirty do
-    local record = dirty[i]
-    dirty[i] = nil
-    record[6] = false
-    if record.index then -- still in the world
-      hash:moved(record, record[1], record[2], record[3], record[4])
+  local stale, abox, hash = world._stale, world._abox, world._actors
+  for i = 1, world._n_stale do
+    local record = stale[i]
+    stale[i] = nil
+    local slot = record.index
+    if slot then -- still in the world
+      local at = slot * 5
+      abox[at] = false
+      local x, y, width, height = abox[at - 4], abox[at - 3], abox[at - 2], abox[at - 1]
+      record[1], record[2], record[3], record[4] = x, y, width, height
+      hash:moved(record, x, y, width, height)
     end
   end
-  world._n_dirty = 0
+  world._n_stale = 0
 end
 
 ---The actor records whose boxes touch the rectangle (edges included), in the world's

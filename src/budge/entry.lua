@@ -61,7 +61,6 @@ function entry.enter(self, call)
       .. "own world (world:remove) or use another world, but make no other call into its own",
       call, self._busy), 3)
   end
-  if self._n_stale > 0 then actors.settle(self) end
 end
 
 ---Errors at `level` when a method was called with "." instead of ":" (`self` is then not

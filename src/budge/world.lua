@@ -48,8 +48,8 @@ local RANGE_CELLS, RANGE_MAX = 2 ^ 24, 2 ^ 40
 local world = {}
 
 ---What the world keeps for each item: one per solid, actor and tile layer. What a move
----reads of it is in its array part, with the box (budge.HashRecord): [5] its kind, [6]
----whether it moved since its cells were brought up to date; the rest is in its hash part.
+---reads of it is in its array part, with the box (budge.HashRecord): [5] its kind; the
+---rest is in its hash part (world:move itself reads no actor's record: actors.lua).
 ---(A move reads one run of memory instead of six nodes spread over the hash: at 10000
 ---movers, `lua5.4 bench/world.lua --way tiles --count 10000` under cachegrind missed its
 ---2 MB cache 13.2 times a move instead of 14.0 with the box there, and 10.2 with these
@@ -58,7 +58,7 @@ local world = {}
 ---@class budge.Record : budge.HashRecord
 ---@field item table the user's box, or the tile layer handle
 ---@field [5] "solid"|"actor"|"sensor"|"tiles" its kind
----@field [6] boolean an actor moved since its cells were last brought up to date
+---@field [6] false unused (an actor's moved mark is the world's, by slot: actors.lua)
 ---@field [7] any the item again, for scans that report it (budge.bump: the game's item)
 ---@field id integer the order it was added (the last tie-breaker everywhere)
 ---@field oneway boolean a solid with wall_type "oneway"
@@ -97,15 +97,10 @@ local world = {}
 ---@field package _sensor_list budge.Record[] the sensors' records (added order, a removal
 ---moving the last one into the gap)
 ---@field package _sensor_count integer how many sensors
----@field package _dirty budge.Record[] actors moved since the last rehash
----@field package _n_dirty integer
 ---@field package _slot_of table<table, integer> each actor's slot: its place in _actor_list
----@field package _ax number[] the world's copy of each actor's box by slot, as world:move
----left it (the record's copy until actors.settle)
----@field package _ay number[]
----@field package _aw number[]
----@field package _ah number[]
----@field package _astale boolean[] by slot: moved by world:move since actors.settle
+---@field package _abox (number|boolean)[] the world's copy of each actor's box, as world:move
+---left it (the record's copy until actors.rehash): x, y, width, height at 5 * slot - 4 to
+---5 * slot - 1, and at 5 * slot whether world:move moved it since actors.rehash
 ---@field package _stale budge.Record[] those actors' records
 ---@field package _n_stale integer
 ---@field package _hits budge.Hit[] the last move's contacts (reused)
@@ -174,9 +169,8 @@ function world.new_world(opts)
     -- (the solids' hash keeps packed copies of their boxes: hash.new says why)
     _solids = hash.new(cell_size, true), _solid_count = 0, _layers = {},
     _bounds = solids.new_bounds(), _box_bounds = solids.new_bounds(),
-    _actors = hash.new(cell_size), _actor_list = {}, _dirty = {}, _n_dirty = 0,
-    _slot_of = {}, _ax = {}, _ay = {}, _aw = {}, _ah = {}, _astale = {}, _stale = {},
-    _n_stale = 0,
+    _actors = hash.new(cell_size), _actor_list = {},
+    _slot_of = {}, _abox = {}, _stale = {}, _n_stale = 0,
     _sensors = hash.new(cell_size), _sensor_list = {}, _sensor_count = 0,
     _hits = hits.new_list(), _n_hits = 0, _check_hits = hits.new_list(), _round = 0,
     _mixed = 0,
@@ -424,10 +418,11 @@ function World:move(actor, dx, dy, method)
   -- through those two calls and the phases' own, the world bench's tile moves took 2540
   -- ns instead of 2237 on Lua 5.4 (`lua5.4 bench/world.lua --profile tiles --frames 100`,
   -- median of 5, 2026-12-01).
-  local slot = self._slot_of[actor]
-  if slot == nil then check_move(self, actor, dx, dy, method) end
-  local ax, ay, aw, ah = self._ax, self._ay, self._aw, self._ah
+  local at = self._slot_of[actor] -- (the actor's slot, then where its entries end)
+  if at == nil then check_move(self, actor, dx, dy, method) end
+  at = at * 5
   do -- (LuaJIT: each local still in scope at the move is carried into its side traces)
+    local abox = self._abox
     -- check_box's and check_number's tests written out (x - x is 0 for a finite number
     -- only); the functions run only to raise their error. Through them, 9 calls per move:
     -- `lua5.4 bench/world.lua --way tiles --count 1000 --frames 60` took 2369 ns per move
@@ -436,7 +431,8 @@ function World:move(actor, dx, dy, method)
     -- comparisons instead of four calls to type on Lua 5.x (same command, 5 fresh runs
     -- each, interleaved, 2026-12-02: 1574 ns per move against 1646 with the checks).
     local x, y, width, height = actor.x, actor.y, actor.width, actor.height
-    if (x ~= ax[slot] or y ~= ay[slot] or width ~= aw[slot] or height ~= ah[slot])
+    if (x ~= abox[at - 4] or y ~= abox[at - 3] or width ~= abox[at - 2]
+      or height ~= abox[at - 1])
       and (type(x) ~= "number" or type(y) ~= "number" or type(width) ~= "number"
         or type(height) ~= "number" or x - x ~= 0 or y - y ~= 0 or width - width ~= 0
         or height - height ~= 0 or width < 0 or height < 0) then
@@ -465,18 +461,20 @@ function World:move(actor, dx, dy, method)
     guarded(self, "an actor's filter", 2, method_entry.move, abandon_move, actor, dx, dy,
       filter, method_entry)
     -- (the filter may have removed an actor, this one or the one whose slot moved here)
-    slot = self._slot_of[actor]
-    if slot == nil then return actor.x, actor.y, self._n_hits, self._hits end
+    at = self._slot_of[actor]
+    if at == nil then return actor.x, actor.y, self._n_hits, self._hits end
+    at = at * 5
   end
   -- (in_order first: on a path where the move returns a constant true LuaJIT compiles no
   -- test of the count, which differs from move to move)
   if not in_order and self._n_hits > 1 then hits.sort(self) end
-  ax[slot], ay[slot] = actor.x, actor.y
+  local abox = self._abox
+  abox[at - 4], abox[at - 3] = actor.x, actor.y
   local width, height = actor.width, actor.height
-  if width ~= aw[slot] or height ~= ah[slot] then
-    actors.copy_size(self, slot, width, height)
+  if width ~= abox[at - 2] or height ~= abox[at - 1] then
+    actors.copy_size(self, at, width, height)
   end
-  if not self._astale[slot] then actors.stale(self, slot) end
+  if not abox[at] then actors.stale(self, at) end
   return actor.x, actor.y, self._n_hits, self._hits
 end
 
@@ -675,6 +673,7 @@ function World:contacts(out)
         describe(list[i].item)), 2)
     end
   end
+  actors.rehash(self) -- (the records hold where world:move left each actor)
   guarded(self, "an actor's filter (during world:contacts)", 2, contacts.find,
     abandon_contacts)
   return contacts.finish(self, out)
