@@ -615,6 +615,17 @@ describe("the world's copy of each actor's box", function()
     assert.same({{}, 0}, {world:query_point(205, 5)})
   end)
 
+  it("keeps the size a move took when a moving solid pushes the actor before any query", function()
+    local world = budge.new_world({cell_size = 32})
+    local pusher = world:add_solid(box(0, 0, 10, 10))
+    local actor = world:add_actor(box(20, 0, 10, 10))
+    actor.width = 30
+    world:move(actor, 0, 0) -- the world takes the new width
+    world:move_solid(pusher, 15, 0) -- pushes the actor 5 px
+    assert.same({25, 0}, {actor.x, actor.y})
+    assert.same({{actor}, 1}, {world:query_point(50, 5)}) -- inside only with the new width
+  end)
+
   it("lets a filter remove its own actor: the move returns where it ended, nothing keeps it", function()
     local world = budge.new_world({cell_size = 32})
     local glass = world:add_solid(box(40, 0, 8, 8))

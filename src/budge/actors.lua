@@ -114,9 +114,11 @@ end
 ---@param record budge.Record
 function actors.placed(world, record)
   local item = record.item
-  record[1], record[2] = item.x, item.y
-  actors.mirror(world, record)
-  world._actors:moved(record, record[1], record[2], record[3], record[4])
+  local abox, at = world._abox, record.index * 5
+  local x, y, width, height = item.x, item.y, abox[at - 2], abox[at - 1]
+  abox[at - 4], abox[at - 3] = x, y
+  record[1], record[2], record[3], record[4] = x, y, width, height
+  world._actors:moved(record, x, y, width, height)
 end
 
 ---Marks the actor whose entries in world._abox end at `at` as moved by world:move: its
