@@ -69,12 +69,13 @@ end
 -- Every cell's pack holds its records' boxes, in the cell's order.
 local function check_packs(h)
   local cells = 0
-  for _, cell in pairs(h._cells) do -- (a spec: pairs is fine here)
+  for key, cell in pairs(h._cells) do -- (a spec: pairs is fine here)
     local pack = cell.pack
     assert(pack, "a packed hash's cell has no pack")
-    assert.are.equal(#cell * 6, #pack)
+    assert.are.equal(pack, h._packs[key]) -- (the scan finds it by the key)
+    assert.are.same({#cell * 6 + 1, #cell * 6 - 5}, {#pack, pack[1]})
     for i, rec in ipairs(cell) do
-      local base = i * 6 - 6
+      local base = i * 6 - 5
       assert.are.same({rec[1], rec[2], rec[1] + rec[3], rec[2] + rec[4], rec.oneway == true, rec},
         {pack[base + 1], pack[base + 2], pack[base + 3], pack[base + 4], pack[base + 5],
           pack[base + 6]})

@@ -80,6 +80,7 @@ hash.SENTINEL = SENTINEL
 ---@field package _n integer how many (#_all, kept as a field: `#` is a search on LuaJIT)
 ---@field package _big budge.HashRecord[] the records spanning more than BIG_CELLS cells
 ---@field package _packed boolean cells keep a packed copy of their records' boxes
+---@field package _packs table<number, table> cell key -> the cell's pack (packed hashes)
 local Hash = {}
 Hash.__index = Hash
 
@@ -96,10 +97,14 @@ local BIG_CELLS = 4096
 local SMALL = 8
 
 ---A new, empty hash. With `packed`, each cell keeps beside its records a packed copy of
----their boxes, as inserted, in one flat array (cell.pack: x, y, right, bottom, oneway,
----record, six slots per record, in the cell's order), which Hash:axis_stop reads instead
----of the records: the world's solids (world.lua), whose boxes change only by a remove and
----an insert.
+---their boxes, as inserted, in one flat array (cell.pack: at [1] the index where its last
+---entry starts, then x, y, right, bottom, oneway, record, six slots per record, in the
+---cell's order), which Hash:axis_stop reads instead of the records: the world's solids
+---(world.lua), whose boxes change only by a remove and an insert. The scan finds each
+---pack by the cell's key in _packs, without the cell: a lookup, the cell's header, its
+---hash node for `pack` and its array (for #cell) were four dependent reads where the pack
+---alone is one (`luajit bench/world.lua --way boxes`, fresh runs interleaved with the
+---tree before, 2026-12-03: figures in the CHANGELOG).
 ---Speed: the scan reads one array per cell, where each record is a table of its own
 ---with a hash part (an actor's 405 bytes on LuaJIT, 530 on Lua 5.4, 850 on both before
 ---its box, kind, mark and cells moved to the array part: a world bench scene of 8000
@@ -110,7 +115,8 @@ local SMALL = 8
 ---@return budge.Hash
 function hash.new(cell_size, packed)
   return setmetatable({cell_size = cell_size, _cells = {}, _stamp = 0,
-    _all = {SENTINEL, SENTINEL}, _n = 0, _big = {}, _packed = packed == true}, Hash)
+    _all = {SENTINEL, SENTINEL}, _n = 0, _big = {}, _packed = packed == true, _packs = {}},
+    Hash)
 end
 
 ---A fresh stamp for one scan: records visited in that scan carry it.
@@ -176,15 +182,22 @@ function Hash:insert(record, x, y, width, height)
     local key = (cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET
     local cell = cells[key]
     if cell == nil then
-      cell = packed and {pack = {}} or {}
+      if packed then
+        local pack = {-5} -- (its [1]: where its last entry starts; none yet)
+        cell = {pack = pack}
+        self._packs[key] = pack
+      else
+        cell = {}
+      end
       cells[key] = cell
     end
     local count = #cell + 1
     cell[count] = record
     if packed then
-      local pack, base = cell.pack, count * 6 - 6
+      local pack, base = cell.pack, count * 6 - 5
       pack[base + 1], pack[base + 2], pack[base + 3] = x, y, right
       pack[base + 4], pack[base + 5], pack[base + 6] = bottom, oneway, record
+      pack[1] = base
     end
   end
 end
@@ -207,8 +220,9 @@ local function unlist_cell(cell, record)
       cell[count] = nil
       local pack = cell.pack
       if pack then
-        for j = i * 6 - 5, count * 6 - 6 do pack[j] = pack[j + 6] end
-        for j = count * 6 - 5, count * 6 do pack[j] = nil end
+        for j = i * 6 - 4, count * 6 - 5 do pack[j] = pack[j + 6] end
+        for j = count * 6 - 4, count * 6 + 1 do pack[j] = nil end
+        pack[1] = count * 6 - 11
       end
       return
     end
@@ -538,16 +552,16 @@ end
 -- reaching the loop then aborted ("inner loop in root trace"), and the functions of the
 -- move were blacklisted one after the other. With the break: 0 in 10.
 local TINY = 2 ^ -1022
-local function scan_packs(cells, probe, cx0, cy0, columns, count)
-  local k, pack, base, last, cx, cy = -1, nil, 0, -6, 0, 0
+local function scan_packs(packs, probe, cx0, cy0, columns, count)
+  local k, pack, base, last, cx, cy = -1, nil, 1, -5, 0, 0
   while true do
     if base > last then -- the next cell
       k = k + 1
       if not (k < count) then break end -- luacheck: ignore (not >=: a NaN count ends it too)
       local row = floor(k / columns)
       cx, cy = cx0 + (k - row * columns), cy0 + row
-      local cell = cells[cx + cy * KEY_STRIDE + KEY_OFFSET] -- (the key insert uses)
-      if cell then pack, base, last = cell.pack, 0, #cell * 6 - 6 end
+      local found = packs[cx + cy * KEY_STRIDE + KEY_OFFSET] -- (the key insert uses)
+      if found then pack, base, last = found, 1, found[1] end
     else
       local face = pack[base + probe.face_slot]
       local signed = probe.sign * face
@@ -568,7 +582,7 @@ end
 -- --count 1000 --frames 60`, 5 fresh runs each, interleaved, 2026-12-02: 3784 ns per move
 -- with the records' scan (scan_cell: unpacked, as Lua 5.x had it), 3470 with this; merged
 -- boxes 3453 -> 3301.
-local function scan_packs_compared(cells, probe, cx0, cy0, columns, count)
+local function scan_packs_compared(packs, probe, cx0, cy0, columns, count)
   local face_slot, cross_slot = probe.face_slot, probe.cross_slot
   local cross, cross_end = probe.cross, probe.cross_end
   local low, high = probe.pos, probe.reach -- (forward; back, from the reach to the edge)
@@ -576,10 +590,9 @@ local function scan_packs_compared(cells, probe, cx0, cy0, columns, count)
   for k = 0, count - 1 do
     local row = floor(k / columns)
     local cx, cy = cx0 + (k - row * columns), cy0 + row
-    local cell = cells[cx + cy * KEY_STRIDE + KEY_OFFSET]
-    if cell then
-      local pack = cell.pack
-      for base = 0, #cell * 6 - 6, 6 do
+    local pack = packs[cx + cy * KEY_STRIDE + KEY_OFFSET]
+    if pack then
+      for base = 1, pack[1], 6 do
         local face = pack[base + face_slot]
         if face >= low and face <= high and pack[base + cross_slot] < cross_end
           and pack[base + cross_slot + 2] > cross then
@@ -627,9 +640,9 @@ function Hash:axis_stop(x, y, width, height, probe)
       local sign = forward and 1 or -1
       probe.sign, probe.signed_reach = sign, sign * probe.reach
       probe.signed_pos = forward and probe.pos or -probe.edge
-      scan_packs(cells, probe, cx0, cy0, columns, count)
+      scan_packs(self._packs, probe, cx0, cy0, columns, count)
     else
-      scan_packs_compared(cells, probe, cx0, cy0, columns, count)
+      scan_packs_compared(self._packs, probe, cx0, cy0, columns, count)
     end
   else -- (one flat loop over the cells, as in collect; the key is the one insert uses)
     for k = 0, count - 1 do
