@@ -9,8 +9,8 @@
 -- world:move touches no record: it finds the actor's slot (its place in the actor list)
 -- and writes the box it leaves into the world's copy by slot (_abox: one flat array, five
 -- entries a slot), noting the slot once; the records catch up with their cells (actors.rehash)
--- before a query, a removal, or a move that gathers actors, and without them before
--- world:contacts (actors.sync). Speed: a record is a
+-- before a query, a removal, or a move that gathers actors (world:contacts copies the
+-- boxes into the records it reads, without their cells). Speed: a record is a
 -- table of its own, its box three or four cache lines away from the next actor's, and
 -- the lookup of it by actor another; with the flat arrays cachegrind's model of a 512 KB
 -- cache (`valgrind --tool=cachegrind --LL=524288,8,64`, 120 minus 60 frames of `bench/
@@ -133,27 +133,6 @@ function actors.stale(world, at)
   world._n_stale = n
 end
 
----Brings the records of the actors world:move moved since the last actors.rehash up to
----date from the world's copy by slot, and leaves their cells to actors.rehash:
----world:contacts reads the records' boxes, not the cells. (LuaJIT shaping: through
----actors.rehash, whose test of each actor's cells is a branch, world:contacts' traces
----carried the cells' side traces too: the example game's machine code, with a budget that
----never runs out, 220-343 KB before world:move stopped reading records, 278-369 after
----with rehash there; figures for this in the CHANGELOG.)
----@param world budge.World
-function actors.sync(world)
-  local stale, abox = world._stale, world._abox
-  for i = 1, world._n_stale do
-    local record = stale[i]
-    local slot = record.index
-    if slot then -- still in the world
-      local at = slot * 5
-      record[1], record[2], record[3], record[4] = abox[at - 4], abox[at - 3], abox[at - 2],
-        abox[at - 1]
-    end
-  end
-end
-
 ---Re-registers an actor's (or a sensor's) record in the cells of its box now.
 ---@param world budge.World
 ---@param record budge.Record
@@ -166,7 +145,7 @@ end
 
 ---Brings the records and the cells of the actors world:move moved since the last call up
 ---to date, from the world's copy by slot. Queries and moves that gather actors run it
----first, and so does a removal (world:contacts runs actors.sync).
+---first, and so does a removal (world:contacts reads the world's copy itself).
 ---@param world budge.World
 function actors.rehash(world)
   local stale, abox, hash = world._stale, world._abox, world._actors

@@ -114,8 +114,14 @@ local function refresh(world)
       end
     end
   end
+  local abox = world._abox
   for i = 1, kept do
     local record = order[i]
+    if record[5] == "actor" then -- (its box as world:move left it: actors.lua)
+      local at = record.index * 5
+      record[1], record[2], record[3], record[4] = abox[at - 4], abox[at - 3], abox[at - 2],
+        abox[at - 1]
+    end
     local x, y, fx, fy = record[1], record[2], record._fx, record._fy
     record._sx0, record._sx1 = (fx < x and fx or x), (fx < x and x or fx) + record[3]
     record._sy0, record._sy1 = (fy < y and fy or y), (fy < y and y or fy) + record[4]

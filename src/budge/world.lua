@@ -673,7 +673,6 @@ function World:contacts(out)
         describe(list[i].item)), 2)
     end
   end
-  actors.sync(self) -- (the records' boxes: where world:move left each actor)
   guarded(self, "an actor's filter (during world:contacts)", 2, contacts.find,
     abandon_contacts)
   return contacts.finish(self, out)
