@@ -462,7 +462,10 @@ function World:move(actor, dx, dy, method)
       filter, method_entry)
     -- (the filter may have removed an actor, this one or the one whose slot moved here)
     at = self._slot_of[actor]
-    if at == nil then return actor.x, actor.y, self._n_hits, self._hits end
+    if at == nil then -- (gone: its hits are still its move's, sorted)
+      if self._n_hits > 1 then hits.sort(self) end
+      return actor.x, actor.y, self._n_hits, self._hits
+    end
     at = at * 5
   end
   -- (in_order first: on a path where the move returns a constant true LuaJIT compiles no
