@@ -626,6 +626,30 @@ describe("the world's copy of each actor's box", function()
     assert.same({{actor}, 1}, {world:query_point(50, 5)}) -- inside only with the new width
   end)
 
+  it("leaves the order a swept move asks its filter in as it was when an actor is removed", function()
+    -- (the moved actors' cells are brought up to date at the next query, not at a removal:
+    -- a cell's order decides which candidate a swept move asks first; found by a review)
+    local world = budge.new_world({cell_size = 32})
+    local a = world:add_actor(box(200, 200, 5, 5))
+    local b = world:add_actor(box(20, 0, 5, 5))
+    local c = world:add_actor(box(40, 0, 5, 5))
+    local mover = world:add_actor(box(34, 20, 20, 5))
+    world:move(b, 16, 0) -- into the next column of cells, its cells not yet updated
+    world:remove(a)
+    local e = world:add_actor(box(44, 2, 5, 5))
+    local names = {[b] = "b", [c] = "c", [e] = "e"}
+    local asked = {}
+    mover.filter = function(_, other)
+      asked[#asked + 1] = names[other]
+      if other == b and world:has(e) then world:remove(e) end
+      return "cross"
+    end
+    local _, _, n, hits = world:move(mover, 0, -30, "swept")
+    local got = {}
+    for i = 1, n do got[i] = names[hits[i].other] end
+    assert.same({{"c", "e", "b"}, {"e", "b", "c"}}, {asked, got})
+  end)
+
   it("lets a filter remove its own actor: the move returns where it ended, nothing keeps it", function()
     local world = budge.new_world({cell_size = 32})
     local glass = world:add_solid(box(40, 0, 8, 8))

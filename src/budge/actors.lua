@@ -9,7 +9,7 @@
 -- world:move touches no record: it finds the actor's slot (its place in the actor list)
 -- and writes the box it leaves into the world's copy by slot (_abox: one flat array, five
 -- entries a slot), noting the slot once; the records catch up with their cells (actors.rehash)
--- before a query, a removal, or a move that gathers actors (world:contacts copies the
+-- before a query or a move that gathers actors (world:contacts copies the
 -- boxes into the records it reads, without their cells). Speed: a record is a
 -- table of its own, its box three or four cache lines away from the next actor's, and
 -- the lookup of it by actor another; with the flat arrays cachegrind's model of a 512 KB
@@ -72,9 +72,6 @@ end
 ---@param world budge.World
 ---@param record budge.Record
 function actors.remove(world, record)
-  -- (brought up to date first: no slot is then marked, so none is left marked for another
-  -- actor)
-  if world._n_stale > 0 then actors.rehash(world) end
   local list, hash = home(world, record)
   hash:remove(record)
   local index, count = record.index, #list
@@ -83,7 +80,9 @@ function actors.remove(world, record)
   last.index = index
   list[count] = nil
   record.index = nil
-  if record[5] == "actor" then -- the last actor's slot moves into the gap
+  if record[5] == "actor" then -- the last actor's slot moves into the gap, its mark too
+    -- (a record left in _stale has its index: rehash finds its new slot, and skips this one;
+    -- the cells of the moved actors are brought up to date at the next query, as before)
     local abox, at, from = world._abox, index * 5, count * 5
     for k = -4, 0 do
       abox[at + k] = abox[from + k]
@@ -145,7 +144,7 @@ end
 
 ---Brings the records and the cells of the actors world:move moved since the last call up
 ---to date, from the world's copy by slot. Queries and moves that gather actors run it
----first, and so does a removal (world:contacts reads the world's copy itself).
+---first (world:contacts reads the world's copy itself).
 ---@param world budge.World
 function actors.rehash(world)
   local stale, abox, hash = world._stale, world._abox, world._actors
