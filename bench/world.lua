@@ -9,6 +9,9 @@
 --   tiles      the map as a budge tile layer;
 --   boxes      every solid tile its own 16x16 solid box in budge's spatial hash;
 --   merged     the solid tiles merged into rectangles by budge.tiles.merge, in the hash;
+--   blocking   boxes, with every actor's filter answering "slide" to everything: the
+--              actors block each other, as bump's items do (the native world's like
+--              for the front end's ways below);
 --   bump_boxes budge.bump (the bump.lua front end), every solid tile an item, as bump
 --              games do (actors block each other there, as in bump);
 --   bump_merged budge.bump with the merged rectangles as items;
@@ -155,6 +158,10 @@ local function setup(way, grid, starts, method)
       end
     end
     for i = 1, #actors do world:add_actor(actors[i]) end
+    if way == "blocking" then
+      local function slide() return "slide" end
+      for i = 1, #actors do actors[i].filter = slide end
+    end
     local move = world.move
     step = function()
       for i = 1, #actors do
@@ -206,10 +213,12 @@ end
 
 local interpreter = arg[-1] or "lua"
 local has_bump = pcall(require, "bump")
-local ways = {"reference", "tiles", "boxes", "merged", "bump_boxes", "bump_merged"}
+local ways = {"reference", "tiles", "boxes", "merged", "blocking", "bump_boxes",
+  "bump_merged"}
 if has_bump then ways[#ways + 1] = "bump" end
 local NAMES = {reference = "(c) reference", tiles = "(a) tile layer", boxes = "(b) box per tile",
-  merged = "(m) merged boxes", bump_boxes = "budge.bump, box per tile",
+  merged = "(m) merged boxes", blocking = "(b) with actors blocking each other",
+  bump_boxes = "budge.bump, box per tile",
   bump_merged = "budge.bump, merged", bump = "bump.lua 3.1.7"}
 local lines = {}
 local function say(line)
