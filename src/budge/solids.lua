@@ -300,11 +300,9 @@ end
 -- 3000 random scenes) passes with the test strict as well: a box that only touches the
 -- rectangle is never met. It stays closed, the safe side. Reading each cell's packed boxes
 -- instead of its records (a collect that tests the packs, stamp-free, in scan_packs's
--- shape on LuaJIT) saved 5-6% more on Lua 5.4 but ran 13-50% more instructions on LuaJIT,
--- where `luajit -jv` showed this filtered path's functions blacklisted by the hundreds
--- ("JIT compilation disabled", "inner loop in root trace"): not taken. The filtered path
--- already has such aborts on LuaJIT (move_filtered blacklisted ~70 times in 100 frames of
--- the blocking way): what to shape next there.
+-- shape on LuaJIT) saved 5-6% more on Lua 5.4 but ran 13-50% more instructions on LuaJIT
+-- (where the filtered phases are left to the interpreter on purpose: move.lua's jit.off,
+-- and what they call compiles as loops of its own): not taken.
 local function append_records(found, count, set, n, self, x0, y0, x1, y1)
   local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
   local cols, rows, ids, records = set.col, set.row, set.id, set.record
