@@ -214,3 +214,97 @@ describe("Hash:axis_stop over packed cells", function()
     for i = 1, 3000 do assert.are.equal((i - 1) * 4, rawget(touch, i)[1]) end
   end)
 end)
+
+describe("Hash:collect_touching and Hash:collect_overlapping", function()
+  -- Against a brute force over every record (which boxes: closed or strict overlap) and
+  -- against Hash:collect followed by the same test (in which order), after random
+  -- inserts, removes and moves, in hashes small enough to be walked whole and large ones,
+  -- with big records, and rectangles whose sides lie on records' faces.
+  it("keeps the boxes a brute force keeps, once each, in Hash:collect's order", function()
+    local random = random_source.new(9090)
+    local kept_touching, kept_only_touching, small_walks, with_big, compared = 0, 0, 0, 0, 0
+    for scene = 1, 40 do
+      local dyadic = scene % 2 == 0
+      local scale = dyadic and 8 or 7
+      local h = hash.new(({16, 32, 64, 50})[scene % 4 + 1], scene % 3 == 0)
+      local records = {}
+      local function add()
+        local rec = {random(-1200, 1200) / scale, random(-1200, 1200) / scale,
+          random(0, 300) / scale, random(0, 300) / scale}
+        if random(0, 40) == 0 then rec[3], rec[4] = random(2000, 3000), random(2000, 3000) end
+        h:insert(rec, rec[1], rec[2], rec[3], rec[4])
+        records[#records + 1] = rec
+      end
+      for _ = 1, (scene % 4 == 1) and random(1, 3) or random(10, 200) do add() end
+      for _ = 1, 150 do
+        local action = random(1, 8)
+        if action == 1 and #records > 1 then
+          local i = random(1, #records)
+          h:remove(records[i])
+          table.remove(records, i)
+        elseif action == 2 then
+          add()
+        elseif action == 3 then
+          local rec = records[random(1, #records)]
+          h:remove(rec)
+          rec[1], rec[2] = rec[1] + random(-100, 100) / scale, rec[2] + random(-100, 100) / scale
+          h:insert(rec, rec[1], rec[2], rec[3], rec[4])
+        else
+          local x0, y0 = random(-1400, 1400) / scale, random(-1400, 1400) / scale
+          local x1, y1 = x0 + random(0, 400) / scale, y0 + random(0, 400) / scale
+          if random(0, 2) == 0 then -- a side on a record's face
+            local rec = records[random(1, #records)]
+            if random(0, 1) == 0 then x0 = rec[1] + rec[3]; x1 = x0 + random(0, 50) / scale
+            else y1 = rec[2]; y0 = y1 - random(0, 50) / scale end
+          end
+          for _, closed in ipairs({true, false}) do
+            local function keeps(rec)
+              if closed then
+                return rec[1] <= x1 and x0 <= rec[1] + rec[3] and rec[2] <= y1
+                  and y0 <= rec[2] + rec[4]
+              end
+              -- (collect_overlapping takes a width: its right side is x0 + that width)
+              local right, bottom = x0 + (x1 - x0), y0 + (y1 - y0)
+              return rec[1] < right and x0 < rec[1] + rec[3] and rec[2] < bottom
+                and y0 < rec[2] + rec[4]
+            end
+            local out = {"kept"}
+            local n
+            if closed then n = h:collect_touching(x0, y0, x1, y1, out, 1)
+            else n = h:collect_overlapping(x0, y0, x1 - x0, y1 - y0, out, 1) end
+            assert.are.equal("kept", out[1]) -- entries before n + 1 untouched
+            local listed, all = {}, {}
+            local m = h:collect(x0, y0, x1 - x0, y1 - y0, listed, 0)
+            for i = 1, m do if keeps(listed[i]) then all[#all + 1] = listed[i] end end
+            local expected = 0
+            for _, rec in ipairs(records) do if keeps(rec) then expected = expected + 1 end end
+            assert.are.equal(expected, n - 1) -- the brute force's count, each once
+            assert.are.equal(#all, n - 1)
+            for i = 1, #all do assert.are.equal(all[i], out[i + 1]) end -- collect's order
+            compared = compared + 1
+            if closed then
+              kept_touching = kept_touching + n - 1
+              for i = 2, n do
+                if not (out[i][1] < x1 and x0 < out[i][1] + out[i][3] and out[i][2] < y1
+                  and y0 < out[i][2] + out[i][4]) then
+                  kept_only_touching = kept_only_touching + 1
+                end
+              end
+            end
+          end
+          local size = h.cell_size
+          local cells = (math.floor(x1 / size) - math.floor(x0 / size) + 1)
+            * (math.floor(y1 / size) - math.floor(y0 / size) + 1)
+          if cells > h._n then small_walks = small_walks + 1 end
+          if h._big[1] then with_big = with_big + 1 end
+        end
+      end
+    end
+    -- not vacuous: many kept, some only touching, small hashes and big records met
+    assert.is_true(compared > 7000, compared)
+    assert.is_true(kept_touching > 5000, kept_touching)
+    assert.is_true(kept_only_touching > 150, kept_only_touching)
+    assert.is_true(small_walks > 250, small_walks)
+    assert.is_true(with_big > 600, with_big)
+  end)
+end)

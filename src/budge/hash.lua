@@ -382,8 +382,50 @@ local function overlapping_in_cell(cell, stamp, x0, y0, x1, y1, out, n)
   end
   return n
 end
+
+-- Appends the records of one cell whose box overlaps or touches the closed rectangle
+-- (x0, y0)-(x1, y1) and that are not stamped yet to `out`, stamping them. (Comparisons:
+-- Hash:collect_touching serves Lua 5.1-5.4, see solids.lua's append_touching.)
+local function touching(cell, stamp, x0, y0, x1, y1, out, n)
+  for i = 1, #cell do
+    local record = cell[i]
+    if record[1] <= x1 and x0 <= record[1] + record[3] and record[2] <= y1
+      and y0 <= record[2] + record[4] and record._stamp ~= stamp then
+      record._stamp = stamp
+      n = n + 1
+      out[n] = record
+    end
+  end
+  return n
+end
+
 -- (the form this interpreter takes, chosen once: not a call more per cell on Lua 5.x)
 local overlapping = BRANCH_FREE and overlapping_in_cell or overlapping_compared
+
+-- Appends to `out` (from index n + 1) the records `in_cell` keeps (overlapping or
+-- touching) of those in the cells the rectangle (x0, y0)-(x1, y1) touches, once each, in
+-- the order Hash:collect gives; returns the new count. With fewer records than cells, the
+-- list of all records is tested instead (a record's box lies inside the box its cells were
+-- chosen by, so a box the test keeps is in those cells; its two sentinels fail any test).
+local function collect_kept(self, x0, y0, x1, y1, out, n, in_cell)
+  local size = self.cell_size
+  local cx0, cy0 = floor(x0 / size), floor(y0 / size)
+  local cx1, cy1 = floor(x1 / size), floor(y1 / size)
+  local stamp = self:next_stamp()
+  if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > self._n then
+    return in_cell(self._all, stamp, x0, y0, x1, y1, out, n)
+  end
+  local cells = self._cells
+  local columns = cx1 - cx0 + 1
+  for k = 0, columns * (cy1 - cy0 + 1) - 1 do -- (one flat loop: see Hash:collect)
+    local row = floor(k / columns)
+    local cell = cells[(cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
+    if cell then n = in_cell(cell, stamp, x0, y0, x1, y1, out, n) end
+  end
+  local big = self._big
+  if big[1] then return in_cell(big, stamp, x0, y0, x1, y1, out, n) end
+  return n
+end
 
 ---Appends to `out` (from index n + 1) every record whose box (its x, y, width and
 ---height) overlaps the rectangle strictly, once each, and returns the new count; in the
@@ -397,40 +439,22 @@ local overlapping = BRANCH_FREE and overlapping_in_cell or overlapping_compared
 ---@param n integer how many entries of `out` to keep
 ---@return integer n
 function Hash:collect_overlapping(x, y, width, height, out, n)
-  local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
-  if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > self._n then -- fewer records than cells
-    local first = n
-    n = self:collect(x, y, width, height, out, n)
-    local kept = first
-    for i = first + 1, n do
-      local record = out[i]
-      if record[1] < x + width and x < record[1] + record[3] and record[2] < y + height
-        and y < record[2] + record[4] then
-        kept = kept + 1
-        out[kept] = record
-      end
-    end
-    return kept
-  end
-  local stamp = self:next_stamp()
-  local x1, y1 = x + width, y + height
-  local cells = self._cells
-  local columns = cx1 - cx0 + 1
-  for k = 0, columns * (cy1 - cy0 + 1) - 1 do -- (one flat loop: see Hash:collect)
-    local row = floor(k / columns)
-    local cell = cells[(cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET]
-    if cell then n = overlapping(cell, stamp, x, y, x1, y1, out, n) end
-  end
-  local big = self._big
-  for i = 1, #big do
-    local record = big[i]
-    if record[1] < x1 and x < record[1] + record[3] and record[2] < y1
-      and y < record[2] + record[4] then
-      n = n + 1
-      out[n] = record
-    end
-  end
-  return n
+  return collect_kept(self, x, y, x + width, y + height, out, n, overlapping)
+end
+
+---Appends to `out` (from index n + 1) every record whose box overlaps or touches the
+---closed rectangle from (x0, y0) to (x1, y1), once each, and returns the new count; in
+---the order Hash:collect gives. (A filtered move's candidates, solids.lua: the test while
+---walking the cells, instead of a second pass over everything collect finds.)
+---@param x0 number
+---@param y0 number
+---@param x1 number
+---@param y1 number
+---@param out budge.HashRecord[]
+---@param n integer how many entries of `out` to keep
+---@return integer n
+function Hash:collect_touching(x0, y0, x1, y1, out, n)
+  return collect_kept(self, x0, y0, x1, y1, out, n, touching)
 end
 
 -- Where the probe's box stops against a face (a low face moving forward, a high one moving

@@ -289,20 +289,8 @@ end
 
 -- Appends the records found[1..count] to the set as they are (no filter asked), each
 -- with its record; skips removed ones, `self`, and those whose box neither overlaps nor
--- touches the rectangle (x0, y0)-(x1, y1) (a hash cell holds them too; a move through
--- the rectangle meets none of them). Returns the set's new count.
--- Speed: without that test every box of every cell the rectangle touches was a candidate
--- whose entry the move worked out. The world bench's "blocking" way (a box per tile,
--- every actor's filter "slide", 1000 actors; `lua bench/instructions.lua --way blocking`,
--- 2026-12-03): 28853 -> 19653 instructions per move on LuaJIT, 116088 -> 90081 on Lua
--- 5.4; 0.76 of the time at 1000 actors and 0.82 at 100 (7 fresh runs each, interleaved).
--- The differential spec (a filter answering "slide" is exactly the move without one, in
--- 3000 random scenes) passes with the test strict as well: a box that only touches the
--- rectangle is never met. It stays closed, the safe side. Reading each cell's packed boxes
--- instead of its records (a collect that tests the packs, stamp-free, in scan_packs's
--- shape on LuaJIT) saved 5-6% more on Lua 5.4 but ran 13-50% more instructions on LuaJIT
--- (where the filtered phases are left to the interpreter on purpose: move.lua's jit.off,
--- and what they call compiles as loops of its own): not taken.
+-- touches the closed rectangle (x0, y0)-(x1, y1): tested here on LuaJIT; on Lua 5.x
+-- Hash:collect_touching found only those (see gather_all). Returns the set's new count.
 local function append_records(found, count, set, n, self, x0, y0, x1, y1)
   local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
   local cols, rows, ids, records = set.col, set.row, set.id, set.record
@@ -310,14 +298,12 @@ local function append_records(found, count, set, n, self, x0, y0, x1, y1)
     local record = found[i]
     found[i] = nil
     local rx, ry = record[1], record[2]
-    -- (LuaJIT: one test, the min of the differences (exact for finite numbers), not four
-    -- comparisons each a side exit; Lua 5.x: comparisons, math.min being a call there)
-    if (BRANCH_FREE and min(x1 - rx, rx + record[3] - x0, y1 - ry, ry + record[4] - y0) >= 0
-      or not BRANCH_FREE and rx <= x1 and x0 <= rx + record[3] and ry <= y1
-        and y0 <= ry + record[4])
+    -- (one test, the min of the differences: exact for finite numbers; not four
+    -- comparisons each a side exit)
+    if (not BRANCH_FREE or min(x1 - rx, rx + record[3] - x0, y1 - ry, ry + record[4] - y0) >= 0)
       and not record.removed and record ~= self then
       n = n + 1
-      xs[n], ys[n], ws[n], hs[n] = record[1], record[2], record[3], record[4]
+      xs[n], ys[n], ws[n], hs[n] = rx, ry, record[3], record[4]
       oneway[n], other[n], cols[n], rows[n], ids[n] = record.oneway, record.item, nil, nil,
         record.id
       records[n] = record
@@ -340,10 +326,36 @@ end
 function solids.gather_all(world, x, y, width, height, with_actors)
   local set, found = world._set, world._found
   local n = 0
-  local bx, by, bx1, by1 = clip_to_boxes(world, x, y, x + width, y + height)
+  -- Candidates: the boxes that overlap or touch the rectangle. A hash cell holds others
+  -- too, and a move through the rectangle meets none of them. The candidates are asked in
+  -- a total order (distance, id, row, col), so leaving them out changes no result; the
+  -- differential spec (a filter answering "slide" is exactly the move without one, in
+  -- 3000 random scenes) passes with the test strict as well: a box that only touches the
+  -- rectangle is never met. It stays closed, the safe side.
+  -- Speed: without the test, the world bench's "blocking" way (a box per tile, every
+  -- actor's filter "slide", 1000 actors; `lua bench/instructions.lua --way blocking`,
+  -- 2026-12-03) ran 28853 instead of 19653 instructions per move on LuaJIT and 116088
+  -- instead of 90081 on Lua 5.4 (0.76 of the time at 1000 actors and 0.82 at 100 with
+  -- it, 7 fresh runs each, interleaved). On Lua 5.x the test is made while the cells are
+  -- walked (Hash:collect_touching): 90118 -> 84179 instructions per move at 1000 actors
+  -- and 89217 -> 83059 at 100, 0.84 and 0.91 of the time (medians of the per-round ratios
+  -- of 7 and 9 fresh runs each, interleaved, 2026-12-03; the runs' ratios spread 0.69 to
+  -- 1.54 on this machine, the counts do not). On LuaJIT, where the filtered
+  -- phases are left to the interpreter on purpose (move.lua's jit.off) and each loop they
+  -- call is a trace of its own, that ran 22312 instructions instead of 21256 (median of 3)
+  -- and 1.07 of the time (9 runs): there the test stays in append_records, a pass over
+  -- what Hash:collect found. Reading each cell's packed boxes instead (stamp-free, in
+  -- scan_packs's shape on LuaJIT) saved 5-6% on Lua 5.4 but ran 13-50% more instructions
+  -- on LuaJIT: not taken.
+  local x1, y1 = x + width, y + height
+  local bx, by, bx1, by1 = clip_to_boxes(world, x, y, x1, y1)
   if bx <= bx1 and by <= by1 and world._solid_count > 0 then
-    local count = world._solids:collect(bx, by, bx1 - bx, by1 - by, found, 0)
-    n = append_records(found, count, set, n, nil, x, y, x + width, y + height)
+    -- (clipped to the solids' bounds, which hold every solid's box: a box touches the
+    -- clipped rectangle if and only if it touches the path's)
+    local count
+    if BRANCH_FREE then count = world._solids:collect(bx, by, bx1 - bx, by1 - by, found, 0)
+    else count = world._solids:collect_touching(bx, by, bx1, by1, found, 0) end
+    n = append_records(found, count, set, n, nil, bx, by, bx1, by1)
   end
   set.n = n
   local layers, records = world._layers, world._records
@@ -358,13 +370,17 @@ function solids.gather_all(world, x, y, width, height, with_actors)
     end
   end
   if world._sensor_count > 0 and world._sensors:occupied(x, y, width, height) then
-    n = append_records(found, world._sensors:collect(x, y, width, height, found, 0), set, n,
-      nil, x, y, x + width, y + height)
+    local count
+    if BRANCH_FREE then count = world._sensors:collect(x, y, width, height, found, 0)
+    else count = world._sensors:collect_touching(x, y, x1, y1, found, 0) end
+    n = append_records(found, count, set, n, nil, x, y, x1, y1)
   end
   if with_actors and #world._actor_list > 1 then
     actors.rehash(world)
-    n = append_records(found, world._actors:collect(x, y, width, height, found, 0), set, n,
-      world._records[world._probe.actor], x, y, x + width, y + height)
+    local count
+    if BRANCH_FREE then count = world._actors:collect(x, y, width, height, found, 0)
+    else count = world._actors:collect_touching(x, y, x1, y1, found, 0) end
+    n = append_records(found, count, set, n, world._records[world._probe.actor], x, y, x1, y1)
   end
   set.n = n
   return set
