@@ -385,7 +385,7 @@ end
 
 -- Appends the records of one cell whose box overlaps or touches the closed rectangle
 -- (x0, y0)-(x1, y1) and that are not stamped yet to `out`, stamping them. (Comparisons:
--- Hash:collect_touching serves Lua 5.1-5.4, see solids.lua's append_touching.)
+-- Hash:collect_touching serves Lua 5.1-5.4, see solids.lua's gather_all.)
 local function touching(cell, stamp, x0, y0, x1, y1, out, n)
   for i = 1, #cell do
     local record = cell[i]
