@@ -48,8 +48,8 @@ hash.SENTINEL = SENTINEL
 
 ---What the hash reads and writes on a record. A record carries a copy of its box in its
 ---array part ([1] x, [2] y, [3] width, [4] height), read by the scans that test boxes
----(Hash:axis_stop, Hash:collect_overlapping); Hash:collect needs only the cell and stamp
----fields. (The array part: the four values in one run of memory, not four hash nodes
+---(Hash:axis_stop, Hash:collect_overlapping, Hash:collect_touching); Hash:collect needs
+---only the cell and stamp fields. (The array part: the four values in one run of memory, not four hash nodes
 ---spread over a record's 16 or 32: `luajit bench/world.lua --way W --count 10000`, 7
 ---fresh runs each, interleaved, 2026-12-02: tiles 259 -> 222 ns per move, budge.bump
 ---2939 -> 2191.)
@@ -284,23 +284,34 @@ end
 ---made bench/contacts.lua's 1000 walkers compile 753 traces and 1372 KB of machine code
 ---(238 KB without sensors) and moves took 763 ns instead of 314 with a budget that never
 ---runs out (its loops' exits each carry a copy of the rest of the move).
----@param x number
----@param y number
----@param width number
----@param height number
+---The rectangle from (x0, y0) to (x1, y1): its far sides as given (see collect_between).
+---@param x0 number
+---@param y0 number
+---@param x1 number
+---@param y1 number
 ---@return boolean
-function Hash:occupied(x, y, width, height)
+function Hash:occupied_between(x0, y0, x1, y1)
   if self._n == 0 then return false end
   if self._big[1] then return true end
   local size = self.cell_size
-  local cx0, cy0 = floor(x / size), floor(y / size)
-  local cx1, cy1 = floor((x + width) / size), floor((y + height) / size)
+  local cx0, cy0 = floor(x0 / size), floor(y0 / size)
+  local cx1, cy1 = floor(x1 / size), floor(y1 / size)
   if cx1 - cx0 > 1 or cy1 - cy0 > 1 then return true end
   local cells = self._cells
   local key = cx0 + cy0 * KEY_STRIDE + KEY_OFFSET
   if cells[key] or cells[key + (cx1 - cx0)] then return true end
   key = key + (cy1 - cy0) * KEY_STRIDE
   return (cells[key] or cells[key + (cx1 - cx0)]) ~= nil
+end
+
+---Hash:occupied_between for the rectangle at (x, y) of `width` and `height`.
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+---@return boolean
+function Hash:occupied(x, y, width, height)
+  return self:occupied_between(x, y, x + width, y + height)
 end
 
 -- Appends the records of one cell not stamped yet to `out`, stamping them.
@@ -317,17 +328,21 @@ local function collect_cell(cell, stamp, out, n)
 end
 
 ---Appends to `out` (from index n + 1) every record in the cells touched by the
----rectangle, once each, and returns the new count. Records come cell by cell in row
----order, and in insertion order inside a cell; callers sort what they return.
----@param x number
----@param y number
----@param width number
----@param height number
+---rectangle from (x0, y0) to (x1, y1), once each, and returns the new count. Records come
+---cell by cell in row order, and in insertion order inside a cell; callers sort what they
+---return. (The far sides as given: x0 + (x1 - x0) can round below x1, and a cell edge
+---between the two would be missed.)
+---@param x0 number
+---@param y0 number
+---@param x1 number
+---@param y1 number
 ---@param out budge.HashRecord[]
 ---@param n integer how many entries of `out` to keep
 ---@return integer n
-function Hash:collect(x, y, width, height, out, n)
-  local cx0, cy0, cx1, cy1 = self:cells_of(x, y, width, height)
+function Hash:collect_between(x0, y0, x1, y1, out, n)
+  local size = self.cell_size
+  local cx0, cy0 = floor(x0 / size), floor(y0 / size)
+  local cx1, cy1 = floor(x1 / size), floor(y1 / size)
   local stamp = self:next_stamp()
   local all = self._all
   if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > self._n then -- fewer records than cells: walk them
@@ -346,6 +361,18 @@ function Hash:collect(x, y, width, height, out, n)
   local big = self._big
   if big[1] then return list_touching(big, #big, cx0, cy0, cx1, cy1, out, n) end
   return n
+end
+
+---Hash:collect_between for the rectangle at (x, y) of `width` and `height`.
+---@param x number
+---@param y number
+---@param width number
+---@param height number
+---@param out budge.HashRecord[]
+---@param n integer how many entries of `out` to keep
+---@return integer n
+function Hash:collect(x, y, width, height, out, n)
+  return self:collect_between(x, y, x + width, y + height, out, n)
 end
 
 -- overlapping_in_cell on Lua 5.1-5.4, with comparisons: there math.min is a call into C
@@ -406,7 +433,9 @@ local overlapping = BRANCH_FREE and overlapping_in_cell or overlapping_compared
 -- touching) of those in the cells the rectangle (x0, y0)-(x1, y1) touches, once each, in
 -- the order Hash:collect gives; returns the new count. With fewer records than cells, the
 -- list of all records is tested instead (a record's box lies inside the box its cells were
--- chosen by, so a box the test keeps is in those cells; its two sentinels fail any test).
+-- chosen by, so a box the test keeps is in those cells; its two sentinels, boxes at +inf,
+-- fail the test of any finite rectangle; `#` finds n + 2 there, a search on LuaJIT, only
+-- in a hash of fewer records than the cells asked about).
 local function collect_kept(self, x0, y0, x1, y1, out, n, in_cell)
   local size = self.cell_size
   local cx0, cy0 = floor(x0 / size), floor(y0 / size)

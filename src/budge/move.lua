@@ -386,8 +386,13 @@ local function filtered_phase(world, is_x, pos, cross, size, cross_size, delta, 
       low, high = pos - (k == chunks - 1 and total or to), k == 0 and edge or pos - k * step
     end
     local set
-    if is_x then set = gather_all(world, low, cross, high - low, cross_size, with_actors)
-    else set = gather_all(world, cross, low, cross_size, high - low, with_actors) end
+    -- (the band's far side as computed: low + (high - low) can round below high, and the
+    -- hashes would then leave out a box whose face lies between the two)
+    if is_x then
+      set = gather_all(world, low, cross, high - low, cross_size, high, cross_end, with_actors)
+    else
+      set = gather_all(world, cross, low, cross_size, high - low, cross_end, high, with_actors)
+    end
     local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
     local cols, rows, ids, records, keys = set.col, set.row, set.id, set.record, set.key
     local order, met = set.touch, 0

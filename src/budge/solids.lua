@@ -261,7 +261,8 @@ function solids.gather(world, x, y, width, height)
   local found = world._found
   local bx, by, bx1, by1 = clip_to_boxes(world, x, y, x + width, y + height)
   if bx <= bx1 and by <= by1 and world._solid_count > 0 then
-    local count = world._solids:collect(bx, by, bx1 - bx, by1 - by, found, 0)
+    -- (the clipped sides as they are: bx + (bx1 - bx) can round below bx1)
+    local count = world._solids:collect_between(bx, by, bx1, by1, found, 0)
     n = sort_records(world, found, count, n, nil, SLIDE)
   end
   set.n = n
@@ -321,9 +322,12 @@ end
 ---@param y number
 ---@param width number
 ---@param height number
+---@param x1 number the rectangle's right side as the caller has it (x + width can round
+---below it: the hashes are asked about the rectangle to x1 and y1)
+---@param y1 number its bottom side
 ---@param with_actors boolean
 ---@return budge.CandidateSet
-function solids.gather_all(world, x, y, width, height, with_actors)
+function solids.gather_all(world, x, y, width, height, x1, y1, with_actors)
   local set, found = world._set, world._found
   local n = 0
   -- Candidates: the boxes that overlap or touch the rectangle. A hash cell holds others
@@ -347,13 +351,12 @@ function solids.gather_all(world, x, y, width, height, with_actors)
   -- what Hash:collect found. Reading each cell's packed boxes instead (stamp-free, in
   -- scan_packs's shape on LuaJIT) saved 5-6% on Lua 5.4 but ran 13-50% more instructions
   -- on LuaJIT: not taken.
-  local x1, y1 = x + width, y + height
   local bx, by, bx1, by1 = clip_to_boxes(world, x, y, x1, y1)
   if bx <= bx1 and by <= by1 and world._solid_count > 0 then
     -- (clipped to the solids' bounds, which hold every solid's box: a box touches the
     -- clipped rectangle if and only if it touches the path's)
     local count
-    if BRANCH_FREE then count = world._solids:collect(bx, by, bx1 - bx, by1 - by, found, 0)
+    if BRANCH_FREE then count = world._solids:collect_between(bx, by, bx1, by1, found, 0)
     else count = world._solids:collect_touching(bx, by, bx1, by1, found, 0) end
     n = append_records(found, count, set, n, nil, bx, by, bx1, by1)
   end
@@ -369,16 +372,16 @@ function solids.gather_all(world, x, y, width, height, with_actors)
       n = set.n
     end
   end
-  if world._sensor_count > 0 and world._sensors:occupied(x, y, width, height) then
+  if world._sensor_count > 0 and world._sensors:occupied_between(x, y, x1, y1) then
     local count
-    if BRANCH_FREE then count = world._sensors:collect(x, y, width, height, found, 0)
+    if BRANCH_FREE then count = world._sensors:collect_between(x, y, x1, y1, found, 0)
     else count = world._sensors:collect_touching(x, y, x1, y1, found, 0) end
     n = append_records(found, count, set, n, nil, x, y, x1, y1)
   end
   if with_actors and #world._actor_list > 1 then
     actors.rehash(world)
     local count
-    if BRANCH_FREE then count = world._actors:collect(x, y, width, height, found, 0)
+    if BRANCH_FREE then count = world._actors:collect_between(x, y, x1, y1, found, 0)
     else count = world._actors:collect_touching(x, y, x1, y1, found, 0) end
     n = append_records(found, count, set, n, world._records[world._probe.actor], x, y, x1, y1)
   end
