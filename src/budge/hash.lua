@@ -277,14 +277,14 @@ local function list_touching(list, count, cx0, cy0, cx1, cy1, out, n)
   return n
 end
 
----False when no record can touch the rectangle: a rectangle within 2x2 cells whose
----cells are all empty (and no big record); true otherwise (look with collect). No loop:
+---False when no record can touch the rectangle from (x0, y0) to (x1, y1) (its far sides
+---as given: see collect_between): a rectangle within 2x2 cells whose cells are all empty
+---(and no big record); true otherwise (look with collect_between). No loop:
 ---a move asks it about sparse things (sensors) and most often goes no further.
 ---LuaJIT shaping: without this test, collecting the sensors at every phase of every move
 ---made bench/contacts.lua's 1000 walkers compile 753 traces and 1372 KB of machine code
 ---(238 KB without sensors) and moves took 763 ns instead of 314 with a budget that never
 ---runs out (its loops' exits each carry a copy of the rest of the move).
----The rectangle from (x0, y0) to (x1, y1): its far sides as given (see collect_between).
 ---@param x0 number
 ---@param y0 number
 ---@param x1 number
@@ -302,16 +302,6 @@ function Hash:occupied_between(x0, y0, x1, y1)
   if cells[key] or cells[key + (cx1 - cx0)] then return true end
   key = key + (cy1 - cy0) * KEY_STRIDE
   return (cells[key] or cells[key + (cx1 - cx0)]) ~= nil
-end
-
----Hash:occupied_between for the rectangle at (x, y) of `width` and `height`.
----@param x number
----@param y number
----@param width number
----@param height number
----@return boolean
-function Hash:occupied(x, y, width, height)
-  return self:occupied_between(x, y, x + width, y + height)
 end
 
 -- Appends the records of one cell not stamped yet to `out`, stamping them.

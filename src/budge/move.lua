@@ -501,10 +501,10 @@ local function sensors_crossed(world, actor, x0, y0, x1, y1, dx, dy, path)
   local left, top = x0 < x1 and x0 or x1, y0 < y1 and y0 or y1
   local right = (x0 < x1 and x1 or x0) + width
   local bottom = (y0 < y1 and y1 or y0) + height
-  if not world._sensors:occupied(left, top, right - left, bottom - top) then return end
+  if not world._sensors:occupied_between(left, top, right, bottom) then return end
   world._mixed = 1 -- (its crossings come at their own times: the move sorts its hits)
   world._move_stamp = world._move_stamp + 1
-  local crossing = gather_sensors(world, left, top, right - left, bottom - top)
+  local crossing = gather_sensors(world, left, top, right, bottom)
   if dx ~= 0 then -- (the phases as the move asked them, blocked or not)
     world._round = 1
     report_crossings(world, crossing, true, dx > 0, x0, x1, width, y0, y0 + height, 0, path,

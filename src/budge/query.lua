@@ -32,19 +32,21 @@ local function collect_boxes(world, x, y, width, height)
   actors.rehash(world)
   local found = world._found
   local n = 0
-  local cx, cy, cx1, cy1 = solids.clip_to_boxes(world, x, y, x + width, y + height)
+  local x1, y1 = x + width, y + height
+  local cx, cy, cx1, cy1 = solids.clip_to_boxes(world, x, y, x1, y1)
   if world._solid_count > 0 and cx <= cx1 and cy <= cy1 then
-    n = world._solids:collect(cx, cy, cx1 - cx, cy1 - cy, found, n)
+    -- (the clipped sides as they are: cx + (cx1 - cx) can round below cx1)
+    n = world._solids:collect_between(cx, cy, cx1, cy1, found, n)
   end
   -- actors can be anywhere: a huge rectangle walks the actor list instead of the cells
   local list = world._actor_list
   if #list > 0 and world._actors:cell_count(x, y, width, height) <= 4 * #list then
-    n = world._actors:collect(x, y, width, height, found, n)
+    n = world._actors:collect_between(x, y, x1, y1, found, n)
   else
     for i = 1, #list do n = n + 1; found[n] = list[i] end
   end
   if world._sensor_count > 0 then
-    n = world._sensors:collect(x, y, width, height, found, n)
+    n = world._sensors:collect_between(x, y, x1, y1, found, n)
   end
   return n
 end

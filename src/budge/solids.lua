@@ -259,7 +259,8 @@ function solids.gather(world, x, y, width, height)
   cross.n = 0
   local n = 0
   local found = world._found
-  local bx, by, bx1, by1 = clip_to_boxes(world, x, y, x + width, y + height)
+  local x1, y1 = x + width, y + height
+  local bx, by, bx1, by1 = clip_to_boxes(world, x, y, x1, y1)
   if bx <= bx1 and by <= by1 and world._solid_count > 0 then
     -- (the clipped sides as they are: bx + (bx1 - bx) can round below bx1)
     local count = world._solids:collect_between(bx, by, bx1, by1, found, 0)
@@ -276,12 +277,12 @@ function solids.gather(world, x, y, width, height)
       n = set.n
     end
   end
-  if world._sensor_count > 0 and world._sensors:occupied(x, y, width, height) then
-    cross_sensors(world, found, world._sensors:collect(x, y, width, height, found, 0))
+  if world._sensor_count > 0 and world._sensors:occupied_between(x, y, x1, y1) then
+    cross_sensors(world, found, world._sensors:collect_between(x, y, x1, y1, found, 0))
   end
   if filter ~= nil and #world._actor_list > 1 then
     actors.rehash(world)
-    local count = world._actors:collect(x, y, width, height, found, 0)
+    local count = world._actors:collect_between(x, y, x1, y1, found, 0)
     n = sort_records(world, found, count, n, world._records[actor], nil)
     set.n = n
   end
@@ -389,18 +390,19 @@ function solids.gather_all(world, x, y, width, height, x1, y1, with_actors)
   return set
 end
 
----Fills the world's cross set with the sensors whose boxes touch the rectangle, for an
----actor with no filter (every sensor is crossed). Returns the cross set.
+---Fills the world's cross set with the sensors whose boxes touch the rectangle from (x0,
+---y0) to (x1, y1), for an actor with no filter (every sensor is crossed). Returns the
+---cross set.
 ---@param world budge.World
----@param x number
----@param y number
----@param width number
----@param height number
+---@param x0 number
+---@param y0 number
+---@param x1 number
+---@param y1 number
 ---@return budge.CandidateSet cross
-function solids.gather_sensors(world, x, y, width, height)
+function solids.gather_sensors(world, x0, y0, x1, y1)
   local cross, found = world._cross, world._found
   cross.n = 0
-  cross_sensors(world, found, world._sensors:collect(x, y, width, height, found, 0))
+  cross_sensors(world, found, world._sensors:collect_between(x0, y0, x1, y1, found, 0))
   return cross
 end
 
