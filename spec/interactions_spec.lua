@@ -143,6 +143,101 @@ describe("responses", function()
     for kind, count in pairs(kinds) do assert.is_true(count > 400, kind .. " " .. count) end
   end)
 
+  it("ends no move overlapping what would stop it: the far side where a box ends is the "
+    .. "one its stops and crossings compare with, with a filter or without", function()
+    -- A box at pos (of size) moving forward by delta ends at pos + delta, its far side
+    -- then at (pos + delta) + size, which can round above (pos + size) + delta: a face
+    -- between the two stopped nothing when the stops compared with the second, and the
+    -- box ended inside the solid, tile or actor by a rounding, with no hit. Each case
+    -- puts the face of a solid, a tile layer's tile, a blocking actor or a sensor at one
+    -- of the two roundings or between them, on x or y, with game-sized values and with
+    -- wide boxes across 0, and checks the move against that oracle: the box overlaps
+    -- the thing where it ends exactly when the face lies below its far side there, and
+    -- then it stopped with a hit on it, or crossed it (a sensor). With and without a
+    -- filter, the same. Then a moving solid pushes an actor whose face is there.
+    local rng = random_source.new(20261204)
+    local kinds = {"solid", "tiles", "actor", "sensor"}
+    local overlapped, checked, pushed, at_edge = 0, 0, 0, 0
+    for case = 1, 3000 do
+      local size, pos, delta
+      if case % 2 == 0 then -- game-sized, non-dyadic
+        size = 8 + rng(0, 56000) / 1000
+        pos = rng(-1000000, 1000000) / 997
+        delta = rng(100, 8000) / 1009
+      else -- wide, across 0
+        size = 300 + rng(0, 2500000) / 1000
+        delta = 1 + rng(0, 60000) / 1009
+        pos = rng(-50000, 50000) / 1013 - size - delta
+      end
+      local old_reach, far = (pos + size) + delta, (pos + delta) + size
+      local face = ({old_reach, far, old_reach + (far - old_reach) / 2})[case % 3 + 1]
+      local is_x = case % 4 < 2
+      local kind = kinds[math.floor(case / 4) % 4 + 1]
+      if old_reach <= face and face < far then at_edge = at_edge + 1 end
+      local results = {}
+      for k = 1, 2 do -- k = 2: with a filter ("slide" on everything: a sensor is crossed)
+        local world = budge.new_world({cell_size = 64})
+        local other
+        if kind == "tiles" then -- one 16 px tile whose near face is at `face`
+          local origin = is_x and {x = face, y = -3} or {x = -3, y = face}
+          local handle = world:add_tiles({{1}}, 16, 16, origin)
+          other = is_x and box(face, -3, 16, 16) or box(-3, face, 16, 16)
+          other.handle = handle
+        else
+          other = is_x and box(face, 0, 10, 10) or box(0, face, 10, 10)
+          if kind == "solid" then world:add_solid(other)
+          elseif kind == "actor" then world:add_actor(other)
+          else world:add_sensor(other) end
+        end
+        local actor = world:add_actor(is_x and box(pos, 0, size, 10) or box(0, pos, 10, size))
+        -- (without a filter an actor passes other actors: the reference answers "slide"
+        -- for it alone, the filtered move for everything)
+        if k == 2 or kind == "actor" then actor.filter = always("slide") end
+        local x, y, n, hits = world:move(actor, is_x and delta or 0, is_x and 0 or delta)
+        local lead, near = is_x and x + size or y + size, is_x and other.x or other.y
+        local met = 0
+        for i = 1, n do
+          if hits[i].other == other or hits[i].other == other.handle then met = met + 1 end
+        end
+        if far > near then -- the box would end overlapping it
+          overlapped = overlapped + (k == 1 and 1 or 0)
+          assert.are.equal(1, met, kind)
+          if kind == "sensor" then
+            assert.are.equal("cross", hits[1].response)
+            assert.are.equal(is_x and pos + delta or pos + delta, is_x and x or y)
+          else
+            assert.is_true(lead <= near, kind .. " overlapped") -- stopped, touching it
+          end
+        else
+          assert.are.same({0, pos + delta}, {n, is_x and x or y}, kind)
+        end
+        results[k] = string.format("%.17g %.17g %d", x, y, n)
+        checked = checked + 1
+      end
+      assert.are.equal(results[1], results[2], kind)
+      -- a solid moving by delta pushes an actor whose near face is where the solid's
+      -- far side ends: the actor is left touching the solid's new box, never inside it
+      local world = budge.new_world({cell_size = 64})
+      local solid = world:add_solid(is_x and box(pos, 0, size, 10) or box(0, pos, 10, size))
+      local actor = world:add_actor(is_x and box(face, 0, 10, 10) or box(0, face, 10, 10))
+      world:move_solid(solid, is_x and delta or 0, is_x and 0 or delta)
+      local solid_far = is_x and solid.x + solid.width or solid.y + solid.height
+      local actor_near = is_x and actor.x or actor.y
+      if solid_far > face then
+        pushed = pushed + 1
+        assert.are.equal(solid_far, actor_near) -- pushed to the solid's far side, exactly
+      else
+        assert.are.equal(face, actor_near)
+      end
+    end
+    -- not vacuous: many boxes would end overlapping, many pushes, and many of those with
+    -- the face at or above the old reach (where the box ended inside the thing)
+    assert.is_true(overlapped > 400, "overlapped " .. overlapped)
+    assert.is_true(pushed > 400, "pushed " .. pushed)
+    assert.is_true(at_edge > 400, "at the edge " .. at_edge)
+    assert.are.equal(6000, checked)
+  end)
+
   it("touch ends the whole move at the contact", function()
     local world = budge.new_world()
     local wall = world:add_solid(box(20, -100, 10, 200))

@@ -88,11 +88,15 @@ local function solid_phase(world, solid, oneway, is_x, delta, ride_stamp)
   local reach = delta < 0 and -delta or delta
   local near = world._near
   local count
+  -- (a pixel more each way on the axis too: the band's far side is computed below as the
+  -- solid's will be, (x + delta) + width, which can round above x + (width + reach))
   if is_x then
-    count = near_actors(world, delta < 0 and x + delta or x, y - 1, width + reach, height + 1)
+    count = near_actors(world, (delta < 0 and x + delta or x) - 1, y - 1, width + reach + 2,
+      height + 1)
     solid.x = x + delta
   else
-    count = near_actors(world, x, delta < 0 and y + delta - 1 or y - 1, width, height + reach + 1)
+    count = near_actors(world, x, delta < 0 and y + delta - 1 or y - 1, width,
+      height + reach + 2)
     solid.y = y + delta
   end
   for k = 1, count do
@@ -111,8 +115,8 @@ local function solid_phase(world, solid, oneway, is_x, delta, ride_stamp)
         -- the band swept along x ahead of the leading face, for actors overlapping it
         -- strictly on y that reach out past that face
         if not oneway and ay < y + height and y < ay + ah then
-          if delta > 0 and ax + aw > x + width and ax < x + width + delta then
-            target = x + width + delta
+          if delta > 0 and ax + aw > x + width and ax < x + delta + width then
+            target = x + delta + width -- (the solid's far side where it ends)
           elseif delta < 0 and ax < x and ax + aw > x + delta then
             target = before(x + delta, aw)
           end
@@ -127,8 +131,9 @@ local function solid_phase(world, solid, oneway, is_x, delta, ride_stamp)
           if delta < 0 and ay < y and ay + ah > y + delta
             and (not oneway or ay + ah <= y) then
             target = before(y + delta, ah)
-          elseif delta > 0 and not oneway and ay + ah > y + height and ay < y + height + delta then
-            target = y + height + delta
+          elseif delta > 0 and not oneway and ay + ah > y + height
+            and ay < y + delta + height then
+            target = y + delta + height
           end
         end
         if target then

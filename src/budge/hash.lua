@@ -650,17 +650,18 @@ end
 ---and `item` what the filter is given) in the cells the rectangle touches: where the
 ---box stops, as sweep.stop_forward/backward decide, lands in probe.best, and the records
 ---that stop it there in probe.touch[1..probe.touched]. (No filter is asked: a move with
----one gathers its candidates instead.)
----@param x number
----@param y number
----@param width number
----@param height number
+---one gathers its candidates instead.) The rectangle from (x0, y0) to (x1, y1), its far
+---sides as given (see collect_between).
+---@param x0 number
+---@param y0 number
+---@param x1 number
+---@param y1 number
 ---@param probe budge.AxisProbe
-function Hash:axis_stop(x, y, width, height, probe)
+function Hash:axis_stop(x0, y0, x1, y1, probe)
   -- (cells_of and next_stamp written out: one call less per move on Lua 5.4)
   local size = self.cell_size
-  local cx0, cy0 = floor(x / size), floor(y / size)
-  local cx1, cy1 = floor((x + width) / size), floor((y + height) / size)
+  local cx0, cy0 = floor(x0 / size), floor(y0 / size)
+  local cx1, cy1 = floor(x1 / size), floor(y1 / size)
   local stamp = self._stamp + 1
   self._stamp = stamp
   local cells = self._cells

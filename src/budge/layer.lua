@@ -146,24 +146,25 @@ local function span(origin, size, inverse, count, from, to)
   return first, last
 end
 
----Appends to the candidate set the non-empty tiles that overlap the rectangle
----(strictly), row by row, each as a box with `other` = the layer and `id` its order,
----stopping once the set holds `limit` entries. The one loop over a rectangle of tiles:
----moves gather with it, queries ask it whether any tile is there.
+---Appends to the candidate set the non-empty tiles that overlap the rectangle from (x0,
+---y0) to (x1, y1) (strictly), row by row, each as a box with `other` = the layer and `id`
+---its order, stopping once the set holds `limit` entries. The one loop over a rectangle
+---of tiles: moves gather with it, queries ask it whether any tile is there. (The far
+---sides as given: a filtered phase's band ends at its reach, and x0 + (x1 - x0) can round
+---below it, leaving out a tile whose face lies between the two.)
 ---@param tiles budge.TileLayer
----@param x number
----@param y number
----@param width number
----@param height number
+---@param x0 number
+---@param y0 number
+---@param x1 number
+---@param y1 number
 ---@param set budge.CandidateSet
 ---@param id integer
 ---@param limit? integer
-function layer.gather(tiles, x, y, width, height, set, id, limit)
+function layer.gather(tiles, x0, y0, x1, y1, set, id, limit)
   local tile_width, tile_height = tiles.tile_width, tiles.tile_height
-  local col0, col1 = span(tiles.x, tile_width, tiles._inverse_width, tiles.cols, x, x + width)
+  local col0, col1 = span(tiles.x, tile_width, tiles._inverse_width, tiles.cols, x0, x1)
   if col0 > col1 then return end
-  local row0, row1 = span(tiles.y, tile_height, tiles._inverse_height, tiles.rows, y,
-    y + height)
+  local row0, row1 = span(tiles.y, tile_height, tiles._inverse_height, tiles.rows, y0, y1)
   local kinds, cols = tiles._kinds, tiles.cols
   local n = set.n
   limit = limit or HUGE
@@ -196,7 +197,7 @@ end
 ---@return boolean
 function layer.touches(tiles, x, y, width, height, set)
   set.n = 0
-  layer.gather(tiles, x, y, width, height, set, 0, 1)
+  layer.gather(tiles, x, y, x + width, y + height, set, 0, 1)
   local found = set.n > 0
   set.n = 0
   return found
@@ -239,8 +240,8 @@ function layer.segment_first(tiles, x1, y1, dx, dy, set, width, height)
     local ax, ay, bx, by = x1 + dx * t0, y1 + dy * t0, x1 + dx * t1, y1 + dy * t1
     local left, top = ax < bx and ax or bx, ay < by and ay or by
     set.n = 0
-    layer.gather(tiles, left, top, (ax < bx and bx - ax or ax - bx) + width,
-      (ay < by and by - ay or ay - by) + height, set, 0)
+    layer.gather(tiles, left, top, left + ((ax < bx and bx - ax or ax - bx) + width),
+      top + ((ay < by and by - ay or ay - by) + height), set, 0)
     for i = 1, set.n do
       local t = segment_enter(x1, y1, dx, dy, xs[i] - width, ys[i] - height, ws[i] + width,
         hs[i] + height)
@@ -352,7 +353,7 @@ function layer.tile_line(tiles, is_x, forward, pos, size, delta, cross, cross_en
     hit = hit * min(max(count - line, 0), 1)
     line = min(line, count - 1)
     face = origin + line * tile
-    hit = hit * ceil(min(max(edge + delta - face, 0), 1))
+    hit = hit * ceil(min(max(pos + delta + size - face, 0), 1)) -- (the far side where it ends)
   else
     -- the last line whose high face is before edge (a box of size 0: at or before it)
     local j = floor((edge - origin) * inverse) - 1
@@ -549,7 +550,7 @@ function layer.tile_stop(tiles, is_x, forward, pos, size, delta, cross, cross_en
     end
     if line >= count then return nil, 0 end
     face = origin + line * tile
-    if face >= edge + delta then return nil, 0 end
+    if face >= pos + delta + size then return nil, 0 end -- (the far side where it ends)
     if is_x then base = line * 4 + RIGHT
     elseif down_any and face >= edge then -- (list_line: the oneway table's tiles)
       local found = 0

@@ -80,19 +80,23 @@ local SIDES_Y = {[true] = "floor", [false] = "ceiling"}
 -- The hash part of an axis phase: the swept rectangle, clipped to the bounds of the
 -- hashed solids, scanned with the probe.
 local function hash_phase(world, probe)
-  local pos, size, delta = probe.pos, probe.size, probe.delta
-  local reach, low
-  if BRANCH_FREE then reach, low = abs(delta), min(pos, pos + delta)
-  else reach, low = delta < 0 and -delta or delta, delta > 0 and pos or pos + delta end
+  local pos, delta = probe.pos, probe.delta
+  -- from the box's start to its reach forward, from the reach to its leading edge back:
+  -- the sides the stops compare with, as computed (low + size + |delta| can round short of
+  -- the reach, and a solid's face between the two would be missed)
+  local low, high
+  if BRANCH_FREE then low, high = min(pos, pos + delta), max(probe.reach, probe.edge)
+  elseif delta > 0 then low, high = pos, probe.reach
+  else low, high = probe.reach, probe.edge end
   local x, y, x1, y1
   if probe.is_x then
-    x, x1, y, y1 = low, low + size + reach, probe.cross, probe.cross_end
+    x, x1, y, y1 = low, high, probe.cross, probe.cross_end
   else
-    y, y1, x, x1 = low, low + size + reach, probe.cross, probe.cross_end
+    y, y1, x, x1 = low, high, probe.cross, probe.cross_end
   end
   x, y, x1, y1 = clip_to_boxes(world, x, y, x1, y1)
   if x <= x1 and y <= y1 then
-    world._solids:axis_stop(x, y, x1 - x, y1 - y, probe)
+    world._solids:axis_stop(x, y, x1, y1, probe)
   end
 end
 
@@ -286,7 +290,7 @@ local function axis_phase(world, is_x, pos, cross, size, cross_size, delta)
   local forward = delta > 0
   probe.is_x, probe.forward, probe.delta = is_x, forward, delta
   probe.pos, probe.size, probe.edge = pos, size, pos + size
-  probe.reach = forward and pos + size + delta or pos + delta
+  probe.reach = forward and pos + delta + size or pos + delta -- (the far side where it ends)
   probe.cross, probe.cross_end = cross, cross + cross_size
   probe.blocks_oneway = not is_x and forward
   probe.sources = 0
@@ -367,7 +371,7 @@ local function filtered_phase(world, is_x, pos, cross, size, cross_size, delta, 
   local records_of = world._records
   local forward = delta > 0
   local edge = pos + size
-  local reach = forward and edge + delta or pos + delta
+  local reach = forward and pos + delta + size or pos + delta -- (see axis_phase)
   local blocks_oneway = not is_x and forward
   local cross_end = cross + cross_size
   local total = forward and delta or -delta
@@ -381,17 +385,17 @@ local function filtered_phase(world, is_x, pos, cross, size, cross_size, delta, 
     local to = k == chunks - 1 and HUGE or (k + 1) * step
     local low, high -- the band of the axis this chunk looks at
     if forward then
-      low, high = k == 0 and pos or edge + k * step, edge + (k == chunks - 1 and total or to)
+      low, high = k == 0 and pos or edge + k * step, k == chunks - 1 and reach or edge + to
     else
       low, high = pos - (k == chunks - 1 and total or to), k == 0 and edge or pos - k * step
     end
     local set
     -- (the band's far side as computed: low + (high - low) can round below high, and the
-    -- hashes would then leave out a box whose face lies between the two)
+    -- hashes and layers would then leave out a box whose face lies between the two)
     if is_x then
-      set = gather_all(world, low, cross, high - low, cross_size, high, cross_end, with_actors)
+      set = gather_all(world, low, cross, high, cross_end, with_actors)
     else
-      set = gather_all(world, cross, low, cross_size, high - low, cross_end, high, with_actors)
+      set = gather_all(world, cross, low, cross_end, high, with_actors)
     end
     local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
     local cols, rows, ids, records, keys = set.col, set.row, set.id, set.record, set.key

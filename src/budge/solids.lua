@@ -272,7 +272,7 @@ function solids.gather(world, x, y, width, height)
     local tiles = layers[k]
     local record = records[tiles] -- (read before the filter, which may remove the layer)
     if record then
-      gather_layer(tiles, x, y, width, height, set, record.id)
+      gather_layer(tiles, x, y, x1, y1, set, record.id)
       if filter ~= nil then filter_tiles(set, n, cross, tiles, actor, filter, record) end
       n = set.n
     end
@@ -318,17 +318,16 @@ end
 ---filter: solid boxes, tiles, sensors, and (when `with_actors`) the actors but the moving
 ---one (the probe's). set.record[i] is each box's record (false for a tile): the caller
 ---asks the filter about those it meets. Returns the set.
+---The rectangle from (x, y) to (x1, y1), its far sides as the caller has them (a
+---filtered phase's band ends at its reach, and x + (x1 - x) can round below it).
 ---@param world budge.World
 ---@param x number
 ---@param y number
----@param width number
----@param height number
----@param x1 number the rectangle's right side as the caller has it (x + width can round
----below it: the hashes are asked about the rectangle to x1 and y1)
----@param y1 number its bottom side
+---@param x1 number
+---@param y1 number
 ---@param with_actors boolean
 ---@return budge.CandidateSet
-function solids.gather_all(world, x, y, width, height, x1, y1, with_actors)
+function solids.gather_all(world, x, y, x1, y1, with_actors)
   local set, found = world._set, world._found
   local n = 0
   -- Candidates: the boxes that overlap or touch the rectangle. A hash cell holds others
@@ -367,7 +366,7 @@ function solids.gather_all(world, x, y, width, height, x1, y1, with_actors)
     local tiles = layers[k]
     local record = records[tiles]
     if record then
-      gather_layer(tiles, x, y, width, height, set, record.id)
+      gather_layer(tiles, x, y, x1, y1, set, record.id)
       local records_of = set.record
       for i = n + 1, set.n do records_of[i] = false end
       n = set.n
