@@ -238,6 +238,46 @@ describe("responses", function()
     assert.are.equal(6000, checked)
   end)
 
+  it("crosses no sensor between where a blocked box stops and the face that stops it, "
+    .. "with a filter or without", function()
+    -- A box stopped by a face at `wall` ends at the largest position whose far side is at
+    -- most the wall; with non-dyadic values that far side can fall short of it. A sensor
+    -- whose face lies in the gap is never entered by the box. The move with a filter
+    -- compared its distance with the wall's (both rounded) and reported it crossed.
+    local rng = random_source.new(20261205)
+    local in_gap = 0
+    for case = 1, 12000 do
+      local size = 8 + rng(0, 56000) / 1000
+      local pos = rng(-1000000, 1000000) / 997
+      local delta = rng(100, 8000) / 1009
+      local is_x = case % 2 == 0
+      local wall = pos + size + delta * rng(1, 999) / 1000
+      local function place(b) -- (on y: the box turned over the diagonal)
+        if not is_x then b.x, b.y, b.width, b.height = b.y, b.x, b.height, b.width end
+        return b
+      end
+      local reference = budge.new_world({cell_size = 64})
+      reference:add_solid(place(box(wall, 0, 10, 10)))
+      local x, y = reference:move(reference:add_actor(place(box(pos, 0, size, 10))),
+        is_x and delta or 0, is_x and 0 or delta)
+      local lead = (is_x and x or y) + size
+      local face = lead + (wall - lead) / 2
+      if lead < face and face < wall then
+        in_gap = in_gap + 1
+        for k = 1, 2 do
+          local world = budge.new_world({cell_size = 64})
+          local solid = world:add_solid(place(box(wall, 0, 10, 10)))
+          world:add_sensor(place(box(face, 0, 10, 10)))
+          local actor = world:add_actor(place(box(pos, 0, size, 10)))
+          if k == 2 then actor.filter = always("slide") end
+          local x2, y2, n, hits = world:move(actor, is_x and delta or 0, is_x and 0 or delta)
+          assert.are.same({x, y, 1, solid}, {x2, y2, n, hits[1].other}) -- the wall alone
+        end
+      end
+    end
+    assert.is_true(in_gap > 100, "in the gap " .. in_gap) -- not vacuous
+  end)
+
   it("touch ends the whole move at the contact", function()
     local world = budge.new_world()
     local wall = world:add_solid(box(20, -100, 10, 200))

@@ -465,12 +465,15 @@ local function filtered_phase(world, is_x, pos, cross, size, cross_size, delta, 
         end
       end
     end
-    -- the crossings before the stop (or overlapping the box where it started)
+    -- the crossings before the stop (or overlapping the box where it started): entered
+    -- before the box's far side where it stops (its box there, as the move without a
+    -- filter judges them: a distance compared with the stop's can round the other way)
     for c = 1, n_crossed do
       local i = crossed[c]
       local near, length = is_x and xs[i] or ys[i], is_x and ws[i] or hs[i]
       local distance = forward and near - edge or pos - (near + length)
-      if length + size > 0 and (best_key == nil or distance < 0 or keys[i] < best_key) then
+      if length + size > 0 and (best == nil or distance < 0
+        or (forward and near < best + size) or (not forward and near + length > best)) then
         local inside = distance < 0
         add_crossing(world, set, i, not inside and side or nil,
           (inside and passed or passed + distance) / path)
