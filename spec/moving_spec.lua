@@ -20,7 +20,7 @@ describe("actors.near (the actors a moving solid looks at)", function()
     for _ = 1, 300 do
       local x, y = random(-4, 44) / 2, random(-4, 44) / 2
       local width, height = random(0, 16) / 2, random(0, 16) / 2
-      local n = actors.near(world, x, y, width, height)
+      local n = actors.near(world, x, y, x + width, y + height) -- (corners)
       local expected = {}
       for i = 1, #list do
         local a = list[i]
@@ -152,6 +152,50 @@ describe("world:move_solid", function()
     -- back, until it no longer overlaps the right one; then it goes with the left one
     assert.same({34, 34, 32, 30, 28}, trace)
     assert.equal(88, actor.y)
+  end)
+
+  it("pushes to its own far side where it ends, and crushes an actor with no room there "
+    .. "(a push across 0 whose step rounds off its target)", function()
+    -- The pushed actor goes from p to target = (x + dx) + width; p + (target - p) can
+    -- round off target, and a wall at the far side the push then checked (where the box
+    -- does not end) let the actor be set on target with its far side inside the wall.
+    local rounded, crushed = 0, 0
+    for i = 1, 3000 do
+      local p, dx, aw = -i / 1000, 1 + (i % 50) / 10, 8 + (i % 7)
+      local target = (p - 10 + dx) + 10
+      local face = (p + (target - p)) + aw -- the far side a one-step push checks
+      for k = 1, 2 do
+        local world = budge.new_world()
+        local mover = world:add_solid(box(p - 10, 0, 10, 10))
+        local actor = world:add_actor(box(p, 0, aw, 10))
+        if k == 2 then actor.filter = function() return "slide" end end
+        local wall = world:add_solid(box(face, 0, 16, 10))
+        local n = world:move_solid(mover, dx, 0)
+        assert.is_true(actor.x + aw <= wall.x, "inside the wall") -- never
+        if target + aw > wall.x then -- no room: stopped against the wall, crushed
+          assert.are.equal(1, n)
+          assert.is_true(actor.x < mover.x + mover.width and actor.x + aw > wall.x - 1e-9)
+          crushed = crushed + 1
+        else
+          assert.are.same({0, target}, {n, actor.x}) -- exactly on the mover's far side
+        end
+        if face ~= target + aw then rounded = rounded + 1 end
+      end
+    end
+    assert.is_true(rounded > 100 and crushed > 50, rounded .. " " .. crushed) -- not vacuous
+  end)
+
+  it("asks no filter about an actor beside the band it sweeps", function()
+    for _, case in ipairs({{4, 0, -10.5, 0}, {4, 0, 36.5, 0}, {0, -4, 5, 20.5},
+      {0, 4, 5, 30.5}}) do
+      local world = budge.new_world()
+      local mover = world:add_solid(box(0, 10, 32, 10))
+      local asked = 0
+      local actor = world:add_actor(box(case[3], case[4], 10, 10))
+      actor.filter = function() asked = asked + 1 return "slide" end
+      world:move_solid(mover, case[1], case[2])
+      assert.are.same({0, case[3], case[4]}, {asked, actor.x, actor.y})
+    end
   end)
 
   it("rejects what is not a solid of this world, and bad displacements", function()

@@ -163,8 +163,10 @@ function actors.rehash(world)
   world._n_stale = 0
 end
 
----The actor records whose boxes touch the rectangle (edges included), in the world's
----actor order, into world._near; returns their count.
+---The actor records whose boxes touch the rectangle from (x, y) to (x1, y1) (edges
+---included; its far sides as the caller has them: a moving solid's is (x + delta) +
+---width, which x + (width + delta) can round below), in the world's actor order, into
+---world._near; returns their count.
 ---Speed: a straight pass over the actor list, one small loop. The actor hash (brought up
 ---to date, collected, sorted by actor order) is faster on bench/platforms.lua (100 moving
 ---solids, 1000 actors: LuaJIT 2.0-2.4 -> 1.0-2.3 ms per frame, Lua 5.4 10.3 -> 3.7 ms)
@@ -174,12 +176,11 @@ end
 ---@param world budge.World
 ---@param x number
 ---@param y number
----@param width number
----@param height number
+---@param x1 number
+---@param y1 number
 ---@return integer n
-function actors.near(world, x, y, width, height)
+function actors.near(world, x, y, x1, y1)
   local near, list = world._near, world._actor_list
-  local x1, y1 = x + width, y + height
   local n = 0
   for i = 1, #list do
     local record = list[i]
@@ -204,9 +205,8 @@ end
 -- instructions a frame, under cachegrind).
 if rawget(_G, "jit") then
   local min = math.min
-  function actors.near(world, x, y, width, height)
+  function actors.near(world, x, y, x1, y1)
     local near, list = world._near, world._actor_list
-    local x1, y1 = x + width, y + height
     local n = 0
     for i = 1, #list do
       local record = list[i]

@@ -48,12 +48,18 @@ local function shove(world, record, is_x, target)
   end
   if target ~= pos then
     local blocked
-    if is_x then
-      pos, blocked = push_phase(world, filter, true, x, y, actor.width, actor.height,
-        target - pos)
-    else
-      pos, blocked = push_phase(world, filter, false, y, x, actor.height, actor.width,
-        target - pos)
+    -- (pos + (target - pos) can round off target, and the push checked the box's far side
+    -- there: a second step, target minus a nearby value, is exact and ends on target, so
+    -- the faces are checked against target + size, where the box ends)
+    for _ = 1, 3 do
+      if is_x then
+        pos, blocked = push_phase(world, filter, true, pos, y, actor.width, actor.height,
+          target - pos)
+      else
+        pos, blocked = push_phase(world, filter, false, pos, x, actor.height, actor.width,
+          target - pos)
+      end
+      if blocked or pos == target then break end
     end
     if not blocked then pos = target end
     if is_x then x = pos else y = pos end
@@ -85,18 +91,17 @@ end
 -- returns their count.
 local function solid_phase(world, solid, oneway, is_x, delta, ride_stamp)
   local x, y, width, height = solid.x, solid.y, solid.width, solid.height
-  local reach = delta < 0 and -delta or delta
   local near = world._near
   local count
-  -- (a pixel more each way on the axis too: the band's far side is computed below as the
-  -- solid's will be, (x + delta) + width, which can round above x + (width + reach))
+  -- (the band to the solid's far side where it ends, (x + delta) + width, as computed
+  -- below: x + (width + delta) can round below it)
   if is_x then
-    count = near_actors(world, (delta < 0 and x + delta or x) - 1, y - 1, width + reach + 2,
-      height + 1)
+    count = near_actors(world, delta < 0 and x + delta or x, y - 1,
+      delta < 0 and x + width or x + delta + width, y + height)
     solid.x = x + delta
   else
-    count = near_actors(world, x, delta < 0 and y + delta - 1 or y - 1, width,
-      height + reach + 2)
+    count = near_actors(world, x, delta < 0 and y + delta - 1 or y - 1, x + width,
+      delta < 0 and y + height or y + delta + height)
     solid.y = y + delta
   end
   for k = 1, count do
@@ -170,7 +175,7 @@ function carry.move_solid(world, record, dx, dy)
   -- riders are decided once, where the solid stands before it moves
   local top, left, right = solid.y, solid.x, solid.x + solid.width
   local near = world._near
-  for k = 1, near_actors(world, left, top - 1, solid.width, 1) do
+  for k = 1, near_actors(world, left, top - 1, right, top) do
     local actor = near[k].item
     if actor.x < right and left < actor.x + actor.width and actor.y == before(top, actor.height) then
       near[k].ride_stamp = stamp
@@ -191,7 +196,7 @@ function carry.move_solid(world, record, dx, dy)
   if not oneway and not record.removed then
     local x, y, width, height = solid.x, solid.y, solid.width, solid.height
     -- (the last phase's near actors hold every actor that can overlap the new box)
-    for k = 1, count or near_actors(world, x, y, width, height) do
+    for k = 1, count or near_actors(world, x, y, x + width, y + height) do
       local near_record = near[k]
       local actor = near_record.item
       local filter = actor.filter
