@@ -30,6 +30,14 @@ local type, pcall, error = type, pcall, error
 
 local carry = {}
 
+-- One push_phase of `actor`, whose box is at (x, y), from `pos` on the axis by `delta`.
+local function push_step(world, filter, is_x, actor, pos, x, y, delta)
+  if is_x then
+    return push_phase(world, filter, true, pos, y, actor.width, actor.height, delta)
+  end
+  return push_phase(world, filter, false, pos, x, actor.height, actor.width, delta)
+end
+
 -- Moves `actor` along one axis to `target` against everything but the moving solid
 -- (already out of the hash); lands exactly on `target` when nothing is in the way.
 -- Returns true when it got there.
@@ -48,18 +56,12 @@ local function shove(world, record, is_x, target)
   end
   if target ~= pos then
     local blocked
+    pos, blocked = push_step(world, filter, is_x, actor, pos, x, y, target - pos)
     -- (pos + (target - pos) can round off target, and the push checked the box's far side
-    -- there: a second step, target minus a nearby value, is exact and ends on target, so
-    -- the faces are checked against target + size, where the box ends)
-    for _ = 1, 3 do
-      if is_x then
-        pos, blocked = push_phase(world, filter, true, pos, y, actor.width, actor.height,
-          target - pos)
-      else
-        pos, blocked = push_phase(world, filter, false, pos, x, actor.height, actor.width,
-          target - pos)
-      end
-      if blocked or pos == target then break end
+    -- there: a second step, target minus a value this near it, is exact and ends on
+    -- target, so the faces are checked against target + size, where the box ends)
+    if not blocked and pos ~= target then
+      pos, blocked = push_step(world, filter, is_x, actor, pos, x, y, target - pos)
     end
     if not blocked then pos = target end
     if is_x then x = pos else y = pos end
