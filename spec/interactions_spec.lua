@@ -278,6 +278,50 @@ describe("responses", function()
     assert.is_true(in_gap > 100, "in the gap " .. in_gap) -- not vacuous
   end)
 
+  it("with a filter, ends where it ends without one against a tile layer whose origin and "
+    .. "tile size are not whole numbers, never inside a tile", function()
+    -- A filtered move took a tile's far side as (origin + (col - 1) * tile) + tile, which
+    -- can round below the layer's own edge origin + col * tile (what its scans and queries
+    -- use): moving back onto it, the box stopped an ulp inside the tile.
+    local rng = random_source.new(20261206)
+    local differs, checked = 0, 0
+    for case = 1, 1500 do
+      local tile = rng(1000, 40000) / 997
+      local origin = rng(-400000, 400000) / 991
+      local is_x, back = case % 2 == 0, case % 4 < 2
+      local row = {}
+      for col = 1, 12 do row[col] = rng(0, 3) == 0 and 1 or 0 end
+      local grid = {}
+      if is_x then grid[1] = row else for k = 1, 12 do grid[k] = {row[k]} end end
+      local opts = is_x and {x = origin, y = 0} or {x = 0, y = origin}
+      local size = rng(100, 3000) / 101
+      local pos = origin + rng(0, 12000) / 1000 * tile
+      local delta = (back and -1 or 1) * rng(10, 3000) / 103
+      for col = 1, 12 do
+        if (origin + (col - 1) * tile) + tile ~= origin + col * tile then differs = differs + 1 end
+      end
+      local results = {}
+      for k = 1, 2 do
+        local world = budge.new_world({cell_size = 64})
+        local layer = world:add_tiles(grid, is_x and tile or 8, is_x and 8 or tile, opts)
+        local actor = world:add_actor(is_x and box(pos, 1, size, 6) or box(1, pos, 6, size))
+        if k == 2 then actor.filter = always("slide") end
+        local _, n = world:query_rect(actor.x, actor.y, actor.width, actor.height, nil,
+          function(item) return item == layer end)
+        if n == 0 then -- (not starting inside a tile)
+          local x, y = world:move(actor, is_x and delta or 0, is_x and 0 or delta)
+          local _, inside = world:query_rect(x, y, actor.width, actor.height, nil,
+            function(item) return item == layer end)
+          assert.are.equal(0, inside)
+          results[k] = string.format("%.17g %.17g", x, y)
+          checked = checked + 1
+        end
+      end
+      assert.are.equal(results[1], results[2])
+    end
+    assert.is_true(differs > 2000 and checked > 1500, differs .. " " .. checked)
+  end)
+
   it("touch ends the whole move at the contact", function()
     local world = budge.new_world()
     local wall = world:add_solid(box(20, -100, 10, 200))

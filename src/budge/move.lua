@@ -312,18 +312,31 @@ local function add_crossing(world, set, i, side, t)
     CROSS, t)
 end
 
+-- Candidate i's far sides (right, bottom): its box's x + w and y + h, or for a tile (its
+-- record false) the layer's own edges, origin + col * tile, which the layer's scans and
+-- queries compare with: (origin + (col - 1) * tile) + tile can round off them when the
+-- origin or the tile size is not a whole number.
+local function far_sides(set, i)
+  if set.record[i] == false then
+    local tiles = set.other[i]
+    return tiles.x + set.col[i] * tiles.tile_width, tiles.y + set.row[i] * tiles.tile_height
+  end
+  return set.x[i] + set.w[i], set.y[i] + set.h[i]
+end
+
 -- How far along the box's path on the axis candidate i of the set is entered (negative:
 -- the box overlaps it where it starts), or nil when the path, from `pos` until the
 -- leading face reaches `far`, never overlaps it (strictly across the axis too).
 local function entry_distance(set, i, is_x, forward, pos, edge, far, cross_lo, cross_hi)
-  local low, length, across, across_length
-  if is_x then low, length, across, across_length = set.x[i], set.w[i], set.y[i], set.h[i]
-  else low, length, across, across_length = set.y[i], set.h[i], set.x[i], set.w[i] end
-  if across >= cross_hi or cross_lo >= across + across_length then return nil end
+  local right, bottom = far_sides(set, i)
+  local low, high, across, across_high
+  if is_x then low, high, across, across_high = set.x[i], right, set.y[i], bottom
+  else low, high, across, across_high = set.y[i], bottom, set.x[i], right end
+  if across >= cross_hi or cross_lo >= across_high then return nil end
   if forward then
-    if low < far and low + length > pos then return low - edge end
-  elseif low + length > far and low < edge then
-    return pos - (low + length)
+    if low < far and high > pos then return low - edge end
+  elseif high > far and low < edge then
+    return pos - high
   end
   return nil
 end
@@ -453,7 +466,8 @@ local function filtered_phase(world, is_x, pos, cross, size, cross_size, delta, 
         if forward then
           stop = stop_forward(near, pos, edge, reach, size, oneway[i], blocks_oneway)
         else
-          stop = stop_backward(near + (is_x and ws[i] or hs[i]), pos, edge, reach, oneway[i],
+          local right, bottom = far_sides(set, i)
+          stop = stop_backward(is_x and right or bottom, pos, edge, reach, oneway[i],
             blocks_oneway)
         end
         if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
@@ -471,9 +485,11 @@ local function filtered_phase(world, is_x, pos, cross, size, cross_size, delta, 
     for c = 1, n_crossed do
       local i = crossed[c]
       local near, length = is_x and xs[i] or ys[i], is_x and ws[i] or hs[i]
-      local distance = forward and near - edge or pos - (near + length)
+      local right, bottom = far_sides(set, i)
+      local far_face = is_x and right or bottom
+      local distance = forward and near - edge or pos - far_face
       if length + size > 0 and (best == nil or distance < 0
-        or (forward and near < best + size) or (not forward and near + length > best)) then
+        or (forward and near < best + size) or (not forward and far_face > best)) then
         local inside = distance < 0
         add_crossing(world, set, i, not inside and side or nil,
           (inside and passed or passed + distance) / path)
