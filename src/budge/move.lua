@@ -327,11 +327,21 @@ end
 -- How far along the box's path on the axis candidate i of the set is entered (negative:
 -- the box overlaps it where it starts), or nil when the path, from `pos` until the
 -- leading face reaches `far`, never overlaps it (strictly across the axis too).
+-- (far_sides written out: through the call, `lua bench/instructions.lua --lua lua5.4 --way
+-- blocking --count 1000 --frames 5` ran 85852 instructions per move instead of 84622;
+-- 83463 with every far side x + w, 2026-12-03)
 local function entry_distance(set, i, is_x, forward, pos, edge, far, cross_lo, cross_hi)
-  local right, bottom = far_sides(set, i)
+  local x, y = set.x[i], set.y[i]
+  local right, bottom
+  if set.record[i] == false then
+    local tiles = set.other[i]
+    right, bottom = tiles.x + set.col[i] * tiles.tile_width, tiles.y + set.row[i] * tiles.tile_height
+  else
+    right, bottom = x + set.w[i], y + set.h[i]
+  end
   local low, high, across, across_high
-  if is_x then low, high, across, across_high = set.x[i], right, set.y[i], bottom
-  else low, high, across, across_high = set.y[i], bottom, set.x[i], right end
+  if is_x then low, high, across, across_high = x, right, y, bottom
+  else low, high, across, across_high = y, bottom, x, right end
   if across >= cross_hi or cross_lo >= across_high then return nil end
   if forward then
     if low < far and high > pos then return low - edge end
