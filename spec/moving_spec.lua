@@ -185,6 +185,33 @@ describe("world:move_solid", function()
     assert.is_true(rounded > 100 and crushed > 50, rounded .. " " .. crushed) -- not vacuous
   end)
 
+  it("sets a pushed actor on its target when the push's step rounds past it (no step "
+    .. "back against the push: out of a wall it overlaps, up through a oneway top)", function()
+    local before = require("budge.sweep").before
+    local past = 0
+    for i = 1, 4000 do
+      local p, d, size = i / 1000, -(1 + (i % 50) / 10), ({3, 4, 6, 8, 10, 12})[i % 6 + 1]
+      local target = before(p + size + d, size)
+      if p + (target - p) < target then -- (the step lands past the target, the push's way)
+        past = past + 1
+        -- leaving a wall whose near face is inside the actor's box, pushed left
+        local world = budge.new_world()
+        world:add_solid(box(p + 1, 0, size + 20, 10))
+        local mover = world:add_solid(box(p + size, 0, 10, 10))
+        local actor = world:add_actor(box(p, 0, size, 10))
+        assert.are.same({0, target}, {world:move_solid(mover, d, 0), actor.x})
+        -- lifted up through a oneway top lying between the landing's bottom and the target's
+        world = budge.new_world()
+        mover = world:add_solid(box(0, p + size, 20, 10))
+        world:add_solid({x = -50, y = p + (target - p) + size, width = 120, height = 4,
+          wall_type = "oneway"})
+        actor = world:add_actor(box(5, p, 10, size))
+        assert.are.same({0, target}, {world:move_solid(mover, 0, d), actor.y})
+      end
+    end
+    assert.is_true(past > 20, "past " .. past) -- not vacuous
+  end)
+
   it("asks no filter about an actor beside the band it sweeps", function()
     for _, case in ipairs({{4, 0, -10.5, 0}, {4, 0, 36.5, 0}, {0, -4, 5, 20.5},
       {0, 4, 5, 30.5}}) do

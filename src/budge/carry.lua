@@ -56,12 +56,19 @@ local function shove(world, record, is_x, target)
   end
   if target ~= pos then
     local blocked
+    local forward = target > pos
     pos, blocked = push_step(world, filter, is_x, actor, pos, x, y, target - pos)
     -- (pos + (target - pos) can round off target, and the push checked the box's far side
-    -- there: a second step, target minus a value this near it, is exact and ends on
-    -- target, so the faces are checked against target + size, where the box ends)
-    if not blocked and pos ~= target then
+    -- there. Short of target: a second step, target minus a value this near it, is exact
+    -- and ends on target, so the faces are checked where the box ends. Past it, or
+    -- stopped at or past it: the faces were checked beyond where the box ends, and it fits
+    -- on target; a step back would be a move the other way, which a face it overlaps or
+    -- a oneway top can refuse)
+    if not blocked and (forward and pos < target or not forward and pos > target) then
       pos, blocked = push_step(world, filter, is_x, actor, pos, x, y, target - pos)
+    end
+    if blocked and (forward and pos >= target or not forward and pos <= target) then
+      blocked = false
     end
     if not blocked then pos = target end
     if is_x then x = pos else y = pos end
