@@ -212,6 +212,26 @@ describe("world:move_solid", function()
     assert.is_true(past > 20, "past " .. past) -- not vacuous
   end)
 
+  it("pushes an actor that fits exactly between it and a wall onto its target, "
+    .. "not crushed", function()
+    local before = require("budge.sweep").before
+    local short = 0
+    for i = 1, 3000 do
+      local p, dx, aw = -i / 1000, 1 + (i % 50) / 10, 8 + (i % 7)
+      local target = (p - 10 + dx) + 10
+      local face = target + aw -- the wall touches the actor's far side on target
+      if before(face, aw) < target then short = short + 1 end -- (where a stop falls short)
+      local world = budge.new_world()
+      local mover = world:add_solid(box(p - 10, 0, 10, 10))
+      local actor = world:add_actor(box(p, 0, aw, 10))
+      world:add_solid(box(face, 0, 16, 10))
+      if target + aw == face then -- (it fits: touching is not overlapping)
+        assert.are.same({0, target}, {world:move_solid(mover, dx, 0), actor.x})
+      end
+    end
+    assert.is_true(short > 100, "short " .. short) -- not vacuous
+  end)
+
   it("asks no filter about an actor beside the band it sweeps", function()
     for _, case in ipairs({{4, 0, -10.5, 0}, {4, 0, 36.5, 0}, {0, -4, 5, 20.5},
       {0, 4, 5, 30.5}}) do

@@ -64,7 +64,13 @@ local function shove(world, record, is_x, target)
     -- stopped at or past it: the faces were checked beyond where the box ends, and it fits
     -- on target; a step back would be a move the other way, which a face it overlaps or
     -- a oneway top can refuse)
-    if not blocked and (forward and pos < target or not forward and pos > target) then
+    -- (stopped a rounding short of target, as sweep.before can stop a box whose far side
+    -- would touch the face exactly on it: the same exact step, which a face at target +
+    -- size does not stop)
+    local gap = forward and target - pos or pos - target
+    if gap > 0 and (not blocked
+      or gap <= ((target < 0 and -target or target) + (is_x and actor.width or actor.height))
+        * 2 ^ -48) then
       pos, blocked = push_step(world, filter, is_x, actor, pos, x, y, target - pos)
     end
     if blocked and (forward and pos >= target or not forward and pos <= target) then
