@@ -3,11 +3,12 @@
 -- do not move with the machine's load, for A/B comparisons on a shared, noisy machine.
 --
 --   lua bench/instructions.lua --way tiles [--count 1000] [--frames 60] [--lua luajit]
---                              [--traces 12]
+--                              [--traces 12] [--method swept]
 --
 -- Runs `--lua` (default luajit) on bench/world.lua's scene and actors for one way (its
--- warm-up, then `--frames` frames) under `valgrind --tool=callgrind`, which writes its
--- counts out each time the C library's clock() is called: fixtures/garbage.lua calls it
+-- warm-up, then `--frames` frames; the world's moves with `--method`, axis_sweep if none)
+-- under `valgrind --tool=callgrind`, which writes its counts out each time the C
+-- library's clock() is called: fixtures/garbage.lua calls it
 -- at the start and at the end of the timed frames, so the second part holds them alone.
 -- Prints instructions, first-level data cache misses and last-level misses per move, the
 -- last level modelled as 512 KB, 8-way (one core's L2 on the EPYC machines these benches
@@ -23,7 +24,7 @@
 package.path = "./src/?.lua;./src/?/init.lua;./?.lua;" .. package.path
 local common = require("bench.common")
 local options = common.options(arg, {way = "tiles", count = 1000, frames = 60,
-  lua = "luajit", traces = 0, seed = 12345, inner = "", map = ""})
+  lua = "luajit", traces = 0, seed = 12345, inner = "", map = "", method = ""})
 
 if options.inner ~= "" then -- under valgrind: one run of the way, then the trace map
   local jit = rawget(_G, "jit")
@@ -43,7 +44,8 @@ if options.inner ~= "" then -- under valgrind: one run of the way, then the trac
   local grid = world_bench.make_scene(options.seed)
   local actors = world_bench.make_actors(grid, new_random(options.seed + options.count),
     options.count)
-  world_bench.run(options.way, grid, actors, options.frames)
+  world_bench.run(options.way, grid, actors, options.frames,
+    options.method ~= "" and options.method or nil)
   if options.map ~= "" and jit then
     local util = require("jit.util")
     local file = assert(io.open(options.map, "w"))
@@ -70,6 +72,7 @@ local command = table.concat({"valgrind --tool=callgrind --dump-before=clock",
   "bench/instructions.lua --inner 1",
   ("--way %s --count %d --frames %d --seed %d"):format(options.way, options.count,
     options.frames, options.seed),
+  options.method ~= "" and "--method " .. shell_quote(options.method) or "",
   map ~= "" and "--map " .. shell_quote(map) or "",
   ">" .. shell_quote(directory .. "/log"), "2>&1"}, " ")
 os.execute(command) -- (its status differs by interpreter: the counts file says)
@@ -145,8 +148,9 @@ timed:close()
 os.execute("rm -rf " .. shell_quote(directory))
 
 local function per_move(name) return (totals[name] or 0) / moves end
-print(("%s, %d actors, %s, %d timed frames: %.0f instructions, %.2f D1 misses, %.2f "
-  .. "last-level misses (512 KB model) per move"):format(options.way, options.count,
+print(("%s%s, %d actors, %s, %d timed frames: %.0f instructions, %.2f D1 misses, %.2f "
+  .. "last-level misses (512 KB model) per move"):format(options.way,
+  options.method ~= "" and " (" .. options.method .. ")" or "", options.count,
   options.lua, options.frames, per_move("Ir"),
   per_move("D1mr") + per_move("D1mw"), per_move("DLmr") + per_move("DLmw")))
 if map ~= "" then

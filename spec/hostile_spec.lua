@@ -189,6 +189,101 @@ describe("swept", function()
     end
     assert.equal(0, past)
   end)
+
+  it("ends no move inside what stops it, and crosses a sensor exactly when it ends in it, "
+    .. "whatever its times of contact round to", function()
+    -- swept computes when the box enters each candidate from x + width and the candidate's
+    -- faces; with non-dyadic values that time can round to 1 or more while the box where
+    -- the move ends, at x + dx with its far side at (x + dx) + width, overlaps the
+    -- candidate by an ulp, and a tile's far side is its layer's edge origin + col * tile,
+    -- which x + w can round below. Each case aims the end of a move (on x or y, forward
+    -- or back, alone or with a component across) at the near face of a solid, a tile of
+    -- a layer with a fractional origin and tile size, or a blocking actor, within a few
+    -- ulps; oracle: world:query_rect on the box where it ends, which must not overlap the
+    -- thing (the box started outside it), and a hit on it when the box would end
+    -- overlapping it with nothing in the way. A sensor there is crossed exactly when the
+    -- box ends overlapping it (it cannot have passed through: the move ends at its face),
+    -- where the times can round either way (one that ended touching it was reported
+    -- crossing it).
+    local rng = require("fixtures.random").new(20261203)
+    local function nudge(v, k)
+      local e = math.abs(v) * 2 ^ -52
+      return v + k * (e == 0 and 2 ^ -1074 or e)
+    end
+    local kinds = {"solid", "tiles", "actor", "sensor"}
+    local responses = {"none", "slide", "bounce", "touch"}
+    local checked, stopped, crossed = 0, 0, 0
+    for case = 1, 8000 do
+      local kind = kinds[math.floor(case / 2) % 4 + 1]
+      local response = responses[math.floor(case / 8) % 4 + 1]
+      if kind == "actor" and response == "none" then response = "slide" end
+      local is_x, forward = case % 2 == 0, rng(1, 2) == 1
+      local wide = rng(1, 2) == 1
+      local size = wide and 300 + rng(0, 2500000) / 1000 or 8 + rng(0, 56000) / 1000
+      local delta = wide and 1 + rng(0, 60000) / 1009 or rng(100, 8000) / 1009
+      if not forward then delta = -delta end
+      local tile = rng(1, 3) == 1 and 16 or rng(1000, 40000) / 997
+      local world = budge.new_world({cell_size = 64})
+      local thing, low, high
+      if kind == "tiles" then
+        local count = rng(1, 9)
+        local j, origin = rng(0, count - 1), rng(-1000000, 1000000) / 1013
+        local grid = {}
+        for c = 1, count do grid[c] = c == j + 1 and 1 or 0 end
+        if is_x then thing = world:add_tiles({grid}, tile, 16, {x = origin, y = -3})
+        else
+          local column = {}
+          for c = 1, count do column[c] = {grid[c]} end
+          thing = world:add_tiles(column, 16, tile, {x = -3, y = origin})
+        end
+        low, high = origin + j * tile, origin + (j + 1) * tile
+      else
+        local face = rng(-1000000, 1000000) / 997
+        thing = is_x and box(face, 0, tile, 10) or box(0, face, 10, tile)
+        if kind == "solid" then world:add_solid(thing)
+        elseif kind == "sensor" then world:add_sensor(thing)
+        else world:add_actor(thing) end
+        low, high = face, face + tile
+      end
+      local pos = forward and nudge(low - size - delta, rng(-3, 3)) or nudge(high - delta,
+        rng(-3, 3))
+      local across = rng(1, 3) == 1 and (rng(1, 2) == 1 and 1 or -1) * rng(1, 5000) / 1009 or 0
+      local actor = is_x and box(pos, -across, size, 10) or box(-across, pos, 10, size)
+      local function overlaps(x, y)
+        local _, n = world:query_rect(x, y, actor.width, actor.height, nil,
+          function(item) return item == thing end)
+        return n > 0
+      end
+      if not overlaps(actor.x, actor.y) then
+        world:add_actor(actor)
+        if response ~= "none" then
+          local answer = response
+          actor.filter = function() return answer end
+        end
+        local x, y, n, hits = world:move(actor, is_x and delta or across,
+          is_x and across or delta, "swept")
+        local met = false
+        for i = 1, n do met = met or hits[i].other == thing end
+        if kind == "sensor" then
+          assert.are.equal(overlaps(x, y), met, ("case %d: %s at %.17g, %.17g"):format(case,
+            response, x, y))
+          crossed = crossed + (met and 1 or 0)
+        else
+          assert.is_false(overlaps(x, y), ("case %d: %s %s ends at %.17g, %.17g inside it")
+            :format(case, kind, response, x, y))
+          -- where the box would end with nothing in the way overlaps it: it met it
+          if forward and (pos + delta) + size > low or not forward and pos + delta < high then
+            assert.is_true(met, ("case %d: %s %s went through it"):format(case, kind, response))
+            stopped = stopped + 1
+          end
+        end
+        checked = checked + 1
+      end
+    end
+    assert.is_true(checked > 7000, "checked " .. checked)
+    assert.is_true(stopped > 2000, "stopped " .. stopped)
+    assert.is_true(crossed > 500, "crossed " .. crossed)
+  end)
 end)
 
 describe("the world's range", function()

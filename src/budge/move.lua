@@ -26,7 +26,7 @@ local solids = require(here .. ".solids")
 local hits = require(here .. ".hits")
 
 local overlaps = box.overlaps
-local before, first_contact = sweep.before, sweep.first_contact
+local before, first_contact, far_sides = sweep.before, sweep.first_contact, sweep.far_sides
 local NORMAL_X, NORMAL_Y = sweep.NORMAL_X, sweep.NORMAL_Y
 local tile_face, tile_face_scan, tile_stop = layer.tile_face, layer.tile_face_scan,
   layer.tile_stop
@@ -316,14 +316,6 @@ end
 -- record false) the layer's own edges, origin + col * tile, which the layer's scans and
 -- queries compare with: (origin + (col - 1) * tile) + tile can round off them when the
 -- origin or the tile size is not a whole number.
-local function far_sides(set, i)
-  if set.record[i] == false then
-    local tiles = set.other[i]
-    return tiles.x + set.col[i] * tiles.tile_width, tiles.y + set.row[i] * tiles.tile_height
-  end
-  return set.x[i] + set.w[i], set.y[i] + set.h[i]
-end
-
 -- How far along the box's path on the axis candidate i of the set is entered (negative:
 -- the box overlaps it where it starts), or nil when the path, from `pos` until the
 -- leading face reaches `far`, never overlaps it (strictly across the axis too).
@@ -735,13 +727,36 @@ end
 -- Reports the candidates of the cross set that the box (x, y, width, height) moving by
 -- (dx, dy) enters (strictly) at a fraction of that motion in [from, to) and before
 -- `contact`, as "cross" hits at time t0 + (1 - t0) * fraction of the move; once per move,
--- as report_crossings does.
+-- as report_crossings does. When this step is where the motion ends, with the box at
+-- (end_x, end_y), that box decides what the times cannot at a rounding: one that overlaps
+-- the candidate there entered it (at `contact`, or the end, when the times say later),
+-- and one still short of it on an axis it moves along never did (the times can put the
+-- entry an ulp before the end of a move that ends touching it).
 local function report_swept_crossings(world, cross, x, y, width, height, dx, dy, from, to,
-                                      contact, t0)
+                                      contact, t0, end_x, end_y)
   local xs, ys, ws, hs = cross.x, cross.y, cross.w, cross.h
   for i = 1, cross.n do
-    local enter, axis = box_enter(x, y, width, height, dx, dy, xs[i], ys[i], ws[i], hs[i])
-    if enter and enter >= from and enter < to and enter < contact then
+    local bx, by = xs[i], ys[i]
+    local enter, axis = box_enter(x, y, width, height, dx, dy, bx, by, ws[i], hs[i])
+    local inside = false
+    if end_x ~= nil then
+      local right, bottom = far_sides(cross, i)
+      if end_x < right and bx < end_x + width and end_y < bottom and by < end_y + height then
+        if enter == nil or not (enter < to and enter < contact) then
+          inside, enter = true, contact < 1 and contact or 1
+          -- across the axis whose face it passed last: the less it went in, the later
+          local in_x = dx > 0 and (end_x + width - bx) / dx or (dx < 0 and (end_x - right) / dx
+            or HUGE)
+          local in_y = dy > 0 and (end_y + height - by) / dy or (dy < 0 and (end_y - bottom) / dy
+            or HUGE)
+          axis = in_x <= in_y and 1 or 2
+        end
+      elseif (dx > 0 and end_x + width <= bx) or (dx < 0 and end_x >= right)
+        or (dy > 0 and end_y + height <= by) or (dy < 0 and end_y >= bottom) then
+        enter = nil
+      end
+    end
+    if enter and enter >= from and (inside or enter < to and enter < contact) then
       local side
       if axis == 1 then side = dx > 0 and "right" or "left"
       elseif axis == 2 then side = dy > 0 and "floor" or "ceiling" end
@@ -762,7 +777,14 @@ local function advance(world, x, y, dx, dy, round, t0)
   -- only solids and tiles block an actor with no filter, and sensors are crossed
   if filter == nil and world._sensor_count == 0 then
     enter, leave = clip_to_bounds(world, x, y, width, height, dx, dy)
-    if enter == nil then return x + dx, y + dy, nil end
+    -- the box where the move ends is looked at whatever the clip's roundings say: x + dx
+    -- and (x + dx) + width are not the clip's arithmetic
+    local bounds, end_x, end_y = world._bounds, x + dx, y + dy
+    if end_x < bounds.max_x and bounds.min_x < end_x + width and end_y < bounds.max_y
+      and bounds.min_y < end_y + height then
+      if enter == nil then enter = 1 end
+      leave = 1
+    elseif enter == nil then return end_x, end_y, nil end
   end
   -- The steps are those of the whole motion, whatever part of it is looked at: the result
   -- is the same with or without sensors, a filter, or solids far away.
@@ -778,15 +800,22 @@ local function advance(world, x, y, dx, dy, round, t0)
     local t_to = k == chunks and 1 or k / chunks
     local from_x, from_y = x + dx * t_from, y + dy * t_from
     local step_x, step_y = dx * (t_to - t_from), dy * (t_to - t_from)
-    local left = step_x < 0 and from_x + step_x or from_x
-    local top = step_y < 0 and from_y + step_y or from_y
-    local reach_x, reach_y = step_x < 0 and -step_x or step_x, step_y < 0 and -step_y or step_y
-    local set, crossing = gather(world, left, top, width + reach_x, height + reach_y)
-    local t = first_contact(set, x, y, from_x, from_y, width, height, step_x, step_y)
+    -- where this step ends: the last one where the move ends (x + dx), which the box's
+    -- far side there, (x + dx) + width, must not pass into what stops it
+    local end_x, end_y = from_x + step_x, from_y + step_y
+    if k == chunks then end_x, end_y = x + dx, y + dy end
+    local left, far_x = from_x, end_x + width
+    if end_x < from_x then left, far_x = end_x, from_x + width end
+    local top, far_y = from_y, end_y + height
+    if end_y < from_y then top, far_y = end_y, from_y + height end
+    local set, crossing = gather(world, left, top, far_x, far_y)
+    local t = first_contact(set, x, y, from_x, from_y, width, height, step_x, step_y, end_x,
+      end_y)
     local contact = t and t_from + (t_to - t_from) * t
-    if crossing.n > 0 then
+    if not t and crossing.n > 0 then -- (with a contact: below, where it stops)
+      if k ~= chunks then end_x, end_y = nil, nil end
       report_swept_crossings(world, crossing, x, y, width, height, dx, dy,
-        k == first and -HUGE or t_from, k == last and HUGE or t_to, contact or HUGE, t0)
+        k == first and -HUGE or t_from, k == last and HUGE or t_to, HUGE, t0, end_x, end_y)
     end
     if t then
       local touch, normal = set.touch, set.normal
@@ -800,8 +829,7 @@ local function advance(world, x, y, dx, dy, round, t0)
       local corners_block = not blocked_x and not blocked_y
       if corners_block then blocked_y = true end
       local new_x, new_y = from_x + step_x * t, from_y + step_y * t
-      local xs, ys, ws, hs, other, cols, rows, ids = set.x, set.y, set.w, set.h, set.other,
-        set.col, set.row, set.id
+      local xs, ys, other, cols, rows, ids = set.x, set.y, set.other, set.col, set.row, set.id
       local responses = set.response
       local time = t0 + (1 - t0) * contact
       local response = SLIDE
@@ -809,19 +837,20 @@ local function advance(world, x, y, dx, dy, round, t0)
         local i, kind = touch[c], normal[c]
         local chosen = filter and responses[i] or SLIDE
         -- a solid the actor started inside stops it where it is (t is 0): no snapping
-        local outside = not (xs[i] < x + width and x < xs[i] + ws[i] and ys[i] < y + height
-          and y < ys[i] + hs[i])
+        local right, bottom = far_sides(set, i)
+        local outside = not (xs[i] < x + width and x < right and ys[i] < y + height
+          and y < bottom)
         local side
         if kind == NORMAL_X then
           world._round = round
           if not outside then new_x = from_x
-          elseif step_x > 0 then new_x = before(xs[i], width, from_x) else new_x = xs[i] + ws[i] end
+          elseif step_x > 0 then new_x = before(xs[i], width, from_x) else new_x = right end
           side = step_x > 0 and "right" or "left"
         elseif kind == NORMAL_Y or corners_block then
           world._round = round + 1
           if not outside then new_y = from_y
           elseif step_y > 0 then new_y = before(ys[i], height, from_y)
-          else new_y = ys[i] + hs[i] end
+          else new_y = bottom end
           side = step_y > 0 and "floor" or "ceiling"
         end
         if side then
@@ -829,6 +858,11 @@ local function advance(world, x, y, dx, dy, round, t0)
           elseif chosen == BOUNCE and response ~= TOUCH then response = BOUNCE end
           add_hit(world, other[i], side, cols[i], rows[i], ys[i], xs[i], ids[i], chosen, time)
         end
+      end
+      if crossing.n > 0 then
+        world._round = round
+        report_swept_crossings(world, crossing, x, y, width, height, dx, dy,
+          k == first and -HUGE or t_from, HUGE, contact, t0, new_x, new_y)
       end
       return new_x, new_y, blocked_x, blocked_y, contact, response
     end
@@ -937,7 +971,7 @@ local function move_discrete(world, actor, dx, dy, filter, entry)
   local probe = world._probe
   probe.actor, probe.filter = actor, filter
   -- the filter runs here, before the actor moves: if it raises an error, nothing moved
-  local set, crossing = gather(world, x, y, width, height)
+  local set, crossing = gather(world, x, y, x + width, y + height)
   probe.actor, probe.filter = nil, nil
   actor.x, actor.y = x, y
   local n = set.n

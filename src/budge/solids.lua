@@ -245,21 +245,22 @@ end
 ---ignores. What the actor only crosses goes into the world's cross set instead: sensors
 ---(unless the filter ignores them), and anything the filter answers "cross" for. With a
 ---filter, other actors are candidates too. The actor and its filter are the world's
----probe's (set by the move). Returns the set and the cross set.
+---probe's (set by the move). Returns the set and the cross set. The rectangle from (x, y)
+---to (x1, y1), its far sides as given (a box's far side where it ends, `(x + dx) + width`,
+---can round above `x + (dx + width)`).
 ---@param world budge.World
 ---@param x number
 ---@param y number
----@param width number
----@param height number
+---@param x1 number
+---@param y1 number
 ---@return budge.CandidateSet set, budge.CandidateSet cross
-function solids.gather(world, x, y, width, height)
+function solids.gather(world, x, y, x1, y1)
   local probe = world._probe
   local actor, filter = probe.actor, probe.filter
   local set, cross = world._set, world._cross
   cross.n = 0
   local n = 0
   local found = world._found
-  local x1, y1 = x + width, y + height
   local bx, by, bx1, by1 = clip_to_boxes(world, x, y, x1, y1)
   if bx <= bx1 and by <= by1 and world._solid_count > 0 then
     -- (the clipped sides as they are: bx + (bx1 - bx) can round below bx1)

@@ -218,14 +218,29 @@ function sweep.stop_backward(far, pos, edge, reach, oneway, blocks_oneway)
   return pos
 end
 
--- Entry and exit times of [pos, pos + size] moving `delta` against [other, other + size2]
+---The far sides (right, bottom) of candidate i of the set: for a tile, its layer's edge
+---`origin + col * tile`, as the layer's scans and queries have it (with a fractional
+---origin or tile size, `x + w` can round below it); for a box, x + w and y + h.
+---@param set budge.CandidateSet
+---@param i integer
+---@return number right, number bottom
+function sweep.far_sides(set, i)
+  local col = set.col[i]
+  if col ~= nil then -- (a tile: every gather writes col, nil for a box)
+    local tiles = set.other[i]
+    return tiles.x + col * tiles.tile_width, tiles.y + set.row[i] * tiles.tile_height
+  end
+  return set.x[i] + set.w[i], set.y[i] + set.h[i]
+end
+
+-- Entry and exit times of [pos, pos + size] moving `delta` against [other, other_far]
 -- (strict overlap). nil when they never overlap on this axis.
-local function interval_times(pos, size, delta, other, other_size)
+local function interval_times(pos, size, delta, other, other_far)
   if delta > 0 then
-    return (other - (pos + size)) / delta, (other + other_size - pos) / delta
+    return (other - (pos + size)) / delta, (other_far - pos) / delta
   elseif delta < 0 then
-    return (other + other_size - pos) / delta, (other - (pos + size)) / delta
-  elseif pos < other + other_size and other < pos + size then
+    return (other_far - pos) / delta, (other - (pos + size)) / delta
+  elseif pos < other_far and other < pos + size then
     return -HUGE, HUGE
   end
   return nil, nil
@@ -247,9 +262,9 @@ end
 ---@param bh number
 ---@return number? t, integer? axis
 function sweep.box_enter(x, y, w, h, dx, dy, bx, by, bw, bh)
-  local enter_x, exit_x = interval_times(x, w, dx, bx, bw)
+  local enter_x, exit_x = interval_times(x, w, dx, bx, bx + bw)
   if enter_x == nil then return nil, nil end
-  local enter_y, exit_y = interval_times(y, h, dy, by, bh)
+  local enter_y, exit_y = interval_times(y, h, dy, by, by + bh)
   if enter_y == nil then return nil, nil end
   local enter = enter_x > enter_y and enter_x or enter_y
   local exit = exit_x < exit_y and exit_x or exit_y
@@ -258,16 +273,24 @@ function sweep.box_enter(x, y, w, h, dx, dy, bx, by, bw, bh)
   return enter, enter_x > enter_y and 1 or 2
 end
 
+-- The largest number below 1: the time of a contact the step's end box shows but the
+-- rounded entry times put at or after the step's end.
+local BELOW_ONE = 1 - 2 ^ -53
+
 ---Time of impact in [0, 1) of the box (x, y, w, h) moving (dx, dy) against the set, or
 ---nil. A candidate that overlaps the box at (start_x, start_y), where the move began,
 ---stops it at time 0 on each axis where the move goes deeper into it (its near face is
 ---inside the box), as the axis rules above do, and lets it leave otherwise; any other candidate
 ---that overlaps at (x, y) already (by rounding between steps of a long move) is met at
----time 0. Lists the candidates met at that time
----in set.touch and how each was met in set.normal: NORMAL_X when it came in across x
----last, NORMAL_Y across y, NORMAL_CORNER when both at the same instant. A oneway
----candidate is met only from above: moving down, its top at or below the box's bottom
----at the start, and entered across y.
+---time 0. A candidate the box overlaps where the step ends, at (end_x, end_y) (the
+---caller's end: x + dx can round elsewhere), is met within the step whatever the entry
+---times' roundings say (at the largest time below 1 when they put it at the end or
+---later), so that a step never ends inside what stops it. Lists the candidates met at
+---that time in set.touch and how each was met in set.normal: NORMAL_X when it came in
+---across x last, NORMAL_Y across y, NORMAL_CORNER when both at the same instant. A
+---oneway candidate is met only from above: moving down, its top at or below the box's
+---bottom at the start, and entered across y. A tile's far sides are its layer's edges
+---(far_sides).
 ---@param set budge.CandidateSet
 ---@param start_x number where the whole move began
 ---@param start_y number
@@ -277,18 +300,28 @@ end
 ---@param h number
 ---@param dx number
 ---@param dy number
+---@param end_x number where this step ends
+---@param end_y number
 ---@return number? t
-function sweep.first_contact(set, start_x, start_y, x, y, w, h, dx, dy)
-  local xs, ys, ws, hs, oneway = set.x, set.y, set.w, set.h, set.oneway
+function sweep.first_contact(set, start_x, start_y, x, y, w, h, dx, dy, end_x, end_y)
+  local xs, ys, ws, hs, oneway, cols = set.x, set.y, set.w, set.h, set.oneway, set.col
   local touch, normal = set.touch, set.normal
   local touched = 0
   local best = 1
   for i = 1, set.n do
-    local bx, by, bw, bh = xs[i], ys[i], ws[i], hs[i]
-    if start_x < bx + bw and bx < start_x + w and start_y < by + bh and by < start_y + h then
+    local bx, by = xs[i], ys[i]
+    local right, bottom -- (far_sides written out: a call per candidate cost more)
+    local col = cols[i]
+    if col ~= nil then
+      local tiles = set.other[i]
+      right, bottom = tiles.x + col * tiles.tile_width, tiles.y + set.row[i] * tiles.tile_height
+    else
+      right, bottom = bx + ws[i], by + hs[i]
+    end
+    if start_x < right and bx < start_x + w and start_y < bottom and by < start_y + h then
       if not oneway[i] then
-        local deeper_x = (dx > 0 and bx > start_x) or (dx < 0 and bx + bw < start_x + w)
-        local deeper_y = (dy > 0 and by > start_y) or (dy < 0 and by + bh < start_y + h)
+        local deeper_x = (dx > 0 and bx > start_x) or (dx < 0 and right < start_x + w)
+        local deeper_y = (dy > 0 and by > start_y) or (dy < 0 and bottom < start_y + h)
         if deeper_x or deeper_y then
           if best > 0 then best = 0; touched = 0 end
           if deeper_x then
@@ -302,13 +335,18 @@ function sweep.first_contact(set, start_x, start_y, x, y, w, h, dx, dy)
         end
       end
     else
-      local enter_x, exit_x = interval_times(x, w, dx, bx, bw)
+      local enter_x, exit_x = interval_times(x, w, dx, bx, right)
       if enter_x then
-        local enter_y, exit_y = interval_times(y, h, dy, by, bh)
+        local enter_y, exit_y = interval_times(y, h, dy, by, bottom)
         if enter_y then
           local enter = enter_x > enter_y and enter_x or enter_y
           local exit = exit_x < exit_y and exit_x or exit_y
-          if enter < exit and exit > 0 and enter <= best then
+          if not (enter < exit and exit > 0) then enter = nil end
+          if (enter == nil or enter >= 1) and end_x < right and bx < end_x + w
+            and end_y < bottom and by < end_y + h then
+            enter = BELOW_ONE -- (it ends inside it: entered within the step)
+          end
+          if enter ~= nil and enter <= best then
             if enter < 0 then enter = 0 end
             if not oneway[i] or (dy > 0 and by >= start_y + h and enter_y >= enter_x) then
               if enter < best then best = enter; touched = 0 end
