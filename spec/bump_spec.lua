@@ -450,6 +450,62 @@ describe("budge.bump", function()
       assert.equal(0, bytes)
       assert.is_true(total > 100, "only " .. total .. " collisions")
     end)
+
+    it("never ends a move inside an item its goal overlaps, and projects a collision with it, "
+      .. "whatever the times round to", function()
+      -- A move's entry times come from x + w, while the rectangle at the goal has its far
+      -- side at goal_x + w: with non-dyadic values the time can round to 1 or more while
+      -- that rectangle overlaps the other item by an ulp (the move met nothing and ended
+      -- inside it: 0.3% of these moves before); and a leg's rectangle, looked up as left +
+      -- (right - left), could leave out an item whose face lay in the rounding (project's
+      -- as well). Each case aims the goal within a few ulps of an item's near face, on x or
+      -- y, forward or back, straight or with a component across, with each response;
+      -- oracle: the rectangle where the item ends overlaps the other exactly never, and
+      -- where the goal's rectangle overlaps it, move and project report a collision with it.
+      local rng = random_source.new(20261205)
+      local function nudge(v, k)
+        local e = math.abs(v) * 2 ^ -52
+        return v + k * (e == 0 and 2 ^ -1074 or e)
+      end
+      local function overlap(x1, y1, w1, h1, x2, y2, w2, h2)
+        return x1 < x2 + w2 and x2 < x1 + w1 and y1 < y2 + h2 and y2 < y1 + h1
+      end
+      local responses = {"slide", "touch", "bounce", "cross"}
+      local goal_inside = 0
+      for case = 1, 4000 do
+        local is_x, forward = case % 2 == 0, rng(1, 2) == 1
+        local wide = rng(1, 2) == 1
+        local size = wide and 300 + rng(0, 2500000) / 1000 or 8 + rng(0, 56000) / 1000
+        local delta = wide and 1 + rng(0, 60000) / 1009 or rng(100, 8000) / 1009
+        if not forward then delta = -delta end
+        local depth, face = rng(1000, 40000) / 997, rng(-1000000, 1000000) / 997
+        local world = bump.newWorld(64)
+        local ox, oy = is_x and face or 0, is_x and 0 or face
+        local ow, oh = is_x and depth or 10, is_x and 10 or depth
+        world:add("other", ox, oy, ow, oh)
+        local pos = forward and nudge(face - size - delta, rng(-3, 3))
+          or nudge(face + depth - delta, rng(-3, 3))
+        local across = rng(1, 3) == 1 and (rng(1, 2) == 1 and 1 or -1) * rng(1, 5000) / 1009 or 0
+        local x, y = is_x and pos or -across, is_x and -across or pos
+        local w, h = is_x and size or 10, is_x and 10 or size
+        local goal_x, goal_y = x + (is_x and delta or across), y + (is_x and across or delta)
+        local response = responses[math.floor(case / 2) % 4 + 1]
+        local _, len = world:project("item", x, y, w, h, goal_x, goal_y)
+        world:add("item", x, y, w, h)
+        local end_x, end_y, cols, n = world:move("item", goal_x, goal_y,
+          function() return response end)
+        if response ~= "cross" then
+          assert.is_false(overlap(end_x, end_y, w, h, ox, oy, ow, oh),
+            ("case %d: %s ends at %.17g, %.17g inside"):format(case, response, end_x, end_y))
+        end
+        if overlap(goal_x, goal_y, w, h, ox, oy, ow, oh) then
+          goal_inside = goal_inside + 1
+          assert.are.same({1, 1, "other"}, {len, n, cols[1].other}, "case " .. case)
+          assert.is_true(cols[1].ti < 1)
+        end
+      end
+      assert.is_true(goal_inside > 1000, "goal inside " .. goal_inside)
+    end)
   end)
 
   describe("what a hostile review found", function()

@@ -263,18 +263,16 @@ describe("Hash:collect_touching and Hash:collect_overlapping", function()
                 return rec[1] <= x1 and x0 <= rec[1] + rec[3] and rec[2] <= y1
                   and y0 <= rec[2] + rec[4]
               end
-              -- (collect_overlapping takes a width: its right side is x0 + that width)
-              local right, bottom = x0 + (x1 - x0), y0 + (y1 - y0)
-              return rec[1] < right and x0 < rec[1] + rec[3] and rec[2] < bottom
+              return rec[1] < x1 and x0 < rec[1] + rec[3] and rec[2] < y1
                 and y0 < rec[2] + rec[4]
             end
             local out = {"kept"}
             local n
             if closed then n = h:collect_touching(x0, y0, x1, y1, out, 1)
-            else n = h:collect_overlapping(x0, y0, x1 - x0, y1 - y0, out, 1) end
+            else n = h:collect_overlapping(x0, y0, x1, y1, out, 1) end
             assert.are.equal("kept", out[1]) -- entries before n + 1 untouched
             local listed, all = {}, {}
-            local m = h:collect(x0, y0, x1 - x0, y1 - y0, listed, 0)
+            local m = h:collect_between(x0, y0, x1, y1, listed, 0)
             for i = 1, m do if keeps(listed[i]) then all[#all + 1] = listed[i] end end
             local expected = 0
             for _, rec in ipairs(records) do if keeps(rec) then expected = expected + 1 end end

@@ -27,7 +27,8 @@ local describe, is_finite, check_filter = box.describe, box.is_finite, box.check
 -- LuaJIT takes the branch-free form of nearest (math.min and math.max compile to no
 -- branch there); Lua 5.1-5.4 the one with comparisons.
 local BRANCH_FREE = rawget(_G, "jit") ~= nil
-local box_enter, before = sweep.box_enter, sweep.before
+local box_enter, before, entry_axis = sweep.box_enter, sweep.before, sweep.entry_axis
+local BELOW_ONE = sweep.BELOW_ONE
 local check_span = entry.check_span
 local format, error, type, setmetatable, getmetatable = string.format, error, type,
   setmetatable, getmetatable
@@ -160,7 +161,13 @@ local function detect_into(col, x1, y1, w1, h1, x2, y2, w2, h2, goal_x, goal_y)
   else
     local axis
     ti, axis = box_enter(x1, y1, w1, h1, dx, dy, x2, y2, w2, h2)
-    if ti == nil then return nil end
+    if ti == nil then
+      -- the rectangle where the move ends overlaps it: entered, though the rounded times
+      -- say at the end or later (the times are from x1 + w1, the goal's far side is
+      -- goal_x + w1)
+      if not is_intersecting(goal_x, goal_y, w1, h1, x2, y2, w2, h2) then return nil end
+      ti, axis = BELOW_ONE, entry_axis(x1, y1, w1, h1, dx, dy, x2, y2, x2 + w2, y2 + h2)
+    end
     if axis == 1 then nx, ny = dx > 0 and -1 or 1, 0 else nx, ny = 0, dy > 0 and -1 or 1 end
     tx, ty = x1 + dx * ti, y1 + dy * ti
     -- exactly on the face it touches, never an ulp into it (sweep.before)
@@ -277,9 +284,9 @@ local ENGINE = {[touch_response] = "touch", [cross_response] = "cross",
 ---(_region_n of them; the rectangle _region_left, _top, _right, _bottom)
 ---@field package _own budge.Record the running move's item's record (and _item, _w, _h)
 ---@field package _leg_x number the running leg's start (_leg_x, _leg_y), its motion
----(_leg_dx, _leg_dy), the start's far sides (_leg_x1, _leg_y1) and the rectangle it sweeps
----(_leg_left, _leg_top, _leg_right, _leg_bottom), for nearest to read where it uses them
----(run_leg writes them)
+---(_leg_dx, _leg_dy), the start's far sides (_leg_x1, _leg_y1), its goal (_leg_goal_x,
+---_leg_goal_y) and the rectangle it sweeps (_leg_left, _leg_top, _leg_right,
+---_leg_bottom), for nearest to read where it uses them (run_leg writes them)
 ---@field package _best budge.Record|false|nil on LuaJIT, nearest's best candidate so far
 ---(nil: none; and _best_t, the leg time it is met at)
 ---@field package _out table[] the running move's cols list and their pool (_out_pool)
@@ -409,7 +416,7 @@ function bump.newWorld(cell_size)
     _pass = 0, -- the running leg's mark (see plan_move)
     _margin = cell_size / 4, -- how far a moved item's loose cells reach (World:move)
     _leg_x = 0, _leg_y = 0, _leg_dx = 0, _leg_dy = 0, _leg_x1 = 0, _leg_y1 = 0,
-    _leg_left = 0, _leg_top = 0, _leg_right = 0, _leg_bottom = 0,
+    _leg_goal_x = 0, _leg_goal_y = 0, _leg_left = 0, _leg_top = 0, _leg_right = 0, _leg_bottom = 0,
     _best = false, _best_t = 0, -- (false until the first leg)
     _region = {}, _region_n = 0, _region_left = 0, _region_top = 0, _region_right = 0,
     _region_bottom = 0, -- what the move's first leg's rectangle overlaps
@@ -586,8 +593,7 @@ local function cover(self, left, top, right, bottom)
   if left < self._region_left or top < self._region_top or right > self._region_right
     or bottom > self._region_bottom then
     local region = self._region
-    local n = self._world._actors:collect_overlapping(left, top, right - left,
-      bottom - top, region, 0)
+    local n = self._world._actors:collect_overlapping(left, top, right, bottom, region, 0)
     self._region_n = n
     region[n + 1], region[n + 2] = SENTINEL, SENTINEL -- (PAD of them: no loop)
     self._region_left, self._region_top = left, top
@@ -606,6 +612,8 @@ local function nearest_compared(self)
     self._leg_bottom
   local w, h = self._w, self._h
   local x1, y1 = x + w, y + h
+  local goal_x, goal_y = self._leg_goal_x, self._leg_goal_y
+  local goal_right, goal_bottom = goal_x + w, goal_y + h
   local region, pass = self._region, self._pass
   local best, best_t, best_axis = nil, HUGE, 0
   for i = 1, self._region_n do
@@ -619,7 +627,12 @@ local function nearest_compared(self)
       -- (+ 0: -0 becomes 0, for math.max gives either zero on a tie, by interpreter)
       local first = max(enter_x, enter_y) + 0
       local exit = min(max(near_x, far_x), max(near_y, far_y))
-      if first < exit and first < 1 and exit > 0 then
+      local met = first < exit and first < 1 and exit > 0
+      if not met and goal_x < rx + record[3] and rx < goal_right and goal_y < ry + record[4]
+        and ry < goal_bottom then
+        first, met = BELOW_ONE, true -- (it ends in it: see nearest)
+      end
+      if met then
         if first < 0 then
           first = overlap_ti(x, y, w, h, rx, ry, record[3], record[4])
         end
@@ -681,6 +694,11 @@ local function nearest(self)
             record[3], record[4])
         end
         if first <= self._best_t then offer(self, record, first) end
+      elseif min(self._leg_goal_x + self._w - rx, rx + record[3] - self._leg_goal_x,
+        self._leg_goal_y + self._h - ry, ry + record[4] - self._leg_goal_y) > 0 then
+        -- the box where the leg ends overlaps it: entered, though the times (from x + w;
+        -- the goal's far side is goal_x + w) round its entry to the end or past it
+        if BELOW_ONE <= self._best_t then offer(self, record, BELOW_ONE) end
       end
     end
   end
@@ -804,6 +822,7 @@ local function run_leg(self, x, y, goal_x, goal_y)
     cover(self, left, top, right, bottom)
     -- (nearest reads them from here)
     self._leg_x, self._leg_y, self._leg_dx, self._leg_dy = x, y, dx, dy
+    self._leg_goal_x, self._leg_goal_y = goal_x, goal_y
     self._leg_x1, self._leg_y1 = x + w, y + h
     self._leg_left, self._leg_top, self._leg_right, self._leg_bottom = left, top, right, bottom
   end
@@ -985,8 +1004,12 @@ function World:project(item, x, y, w, h, goal_x, goal_y, filter)
   filter = filter or default_filter
   local left, top = min(x, goal_x), min(y, goal_y)
   local right, bottom = max(x, goal_x) + w, max(y, goal_y) + h
-  local found, count = self._world:query_rect(left, top, right - left, bottom - top,
-    self._found)
+  -- (query_rect's far sides are left + width and top + height, which can round below
+  -- right and bottom: widened until they do not; the rectangle test below is exact)
+  local width, height = right - left, bottom - top
+  while left + width < right do width = width + max(abs(left), abs(right)) * 2 ^ -52 end
+  while top + height < bottom do height = height + max(abs(top), abs(bottom)) * 2 ^ -52 end
+  local found, count = self._world:query_rect(left, top, width, height, self._found)
   -- The collisions first, the filter asked after: a filter may query the world (which
   -- reuses the scratch `found`) or project again (which gets lists of its own).
   local list, pool = self._project_cols, self._project_pool

@@ -447,18 +447,20 @@ local function collect_kept(self, x0, y0, x1, y1, out, n, in_cell)
 end
 
 ---Appends to `out` (from index n + 1) every record whose box (its x, y, width and
----height) overlaps the rectangle strictly, once each, and returns the new count; in the
----order Hash:collect gives. (budge.bump's moves: the overlap test while walking the
----cells, instead of a second pass over everything collect finds.)
----@param x number
----@param y number
----@param width number
----@param height number
+---height) overlaps the rectangle from (x0, y0) to (x1, y1) strictly, once each, and
+---returns the new count; in the order Hash:collect gives. (budge.bump's moves: the
+---overlap test while walking the cells, instead of a second pass over everything collect
+---finds.) The far sides as given: a leg's rectangle ends at the goal's far side, and x0
+---+ (x1 - x0) can round below it.
+---@param x0 number
+---@param y0 number
+---@param x1 number
+---@param y1 number
 ---@param out budge.HashRecord[]
 ---@param n integer how many entries of `out` to keep
 ---@return integer n
-function Hash:collect_overlapping(x, y, width, height, out, n)
-  return collect_kept(self, x, y, x + width, y + height, out, n, overlapping)
+function Hash:collect_overlapping(x0, y0, x1, y1, out, n)
+  return collect_kept(self, x0, y0, x1, y1, out, n, overlapping)
 end
 
 ---Appends to `out` (from index n + 1) every record whose box overlaps or touches the

@@ -27,6 +27,7 @@ local hits = require(here .. ".hits")
 
 local overlaps = box.overlaps
 local before, first_contact, far_sides = sweep.before, sweep.first_contact, sweep.far_sides
+local entry_axis = sweep.entry_axis
 local NORMAL_X, NORMAL_Y = sweep.NORMAL_X, sweep.NORMAL_Y
 local tile_face, tile_face_scan, tile_stop = layer.tile_face, layer.tile_face_scan,
   layer.tile_stop
@@ -744,12 +745,7 @@ local function report_swept_crossings(world, cross, x, y, width, height, dx, dy,
       if end_x < right and bx < end_x + width and end_y < bottom and by < end_y + height then
         if enter == nil or not (enter < to and enter < contact) then
           inside, enter = true, contact < 1 and contact or 1
-          -- across the axis whose face it passed last: the less it went in, the later
-          local in_x = dx > 0 and (end_x + width - bx) / dx or (dx < 0 and (end_x - right) / dx
-            or HUGE)
-          local in_y = dy > 0 and (end_y + height - by) / dy or (dy < 0 and (end_y - bottom) / dy
-            or HUGE)
-          axis = in_x <= in_y and 1 or 2
+          axis = entry_axis(x, y, width, height, dx, dy, bx, by, right, bottom)
         end
       elseif (dx > 0 and end_x + width <= bx) or (dx < 0 and end_x >= right)
         or (dy > 0 and end_y + height <= by) or (dy < 0 and end_y >= bottom) then

@@ -277,6 +277,29 @@ end
 -- rounded entry times put at or after the step's end.
 local BELOW_ONE = 1 - 2 ^ -53
 
+---The axis (1: x, 2: y) across which the box (x, y, w, h) moving by (dx, dy) comes into
+---the box from (bx, by) to its far sides (right, bottom) last, as box_enter has it (y on a
+---tie): for a contact the rounded times put at the end of the motion or past it, which the
+---box where the motion ends shows (see first_contact).
+---@param x number
+---@param y number
+---@param w number
+---@param h number
+---@param dx number
+---@param dy number
+---@param bx number
+---@param by number
+---@param right number
+---@param bottom number
+---@return integer axis
+function sweep.entry_axis(x, y, w, h, dx, dy, bx, by, right, bottom)
+  local enter_x = interval_times(x, w, dx, bx, right)
+  local enter_y = interval_times(y, h, dy, by, bottom)
+  return (enter_x or -HUGE) > (enter_y or -HUGE) and 1 or 2
+end
+
+sweep.BELOW_ONE = BELOW_ONE
+
 ---Time of impact in [0, 1) of the box (x, y, w, h) moving (dx, dy) against the set, or
 ---nil. A candidate that overlaps the box at (start_x, start_y), where the move began,
 ---stops it at time 0 on each axis where the move goes deeper into it (its near face is
