@@ -13,8 +13,9 @@ local solids = require(here .. ".solids")
 local actors = require(here .. ".actors")
 
 local sort = table.sort
-local segment_enter, box_enter = sweep.segment_enter, sweep.box_enter
+local segment_enter, box_enter_to = sweep.segment_enter, sweep.box_enter_to
 local segment_first, touches = layer.segment_first, layer.touches
+local BELOW_ONE = sweep.BELOW_ONE
 
 local query = {}
 
@@ -26,13 +27,12 @@ local function segment_before(a, b)
   return a.id < b.id
 end
 
--- Records of boxes (solids, actors and sensors) that touch the rectangle, into
--- world._found.
-local function collect_boxes(world, x, y, width, height)
+-- Records of boxes (solids, actors and sensors) that touch the rectangle from (x, y) to
+-- (x1, y1), into world._found.
+local function collect_boxes(world, x, y, x1, y1)
   actors.rehash(world)
   local found = world._found
   local n = 0
-  local x1, y1 = x + width, y + height
   local cx, cy, cx1, cy1 = solids.clip_to_boxes(world, x, y, x1, y1)
   if world._solid_count > 0 and cx <= cx1 and cy <= cy1 then
     -- (the clipped sides as they are: cx + (cx1 - cx) can round below cx1)
@@ -40,7 +40,7 @@ local function collect_boxes(world, x, y, width, height)
   end
   -- actors can be anywhere: a huge rectangle walks the actor list instead of the cells
   local list = world._actor_list
-  if #list > 0 and world._actors:cell_count(x, y, width, height) <= 4 * #list then
+  if #list > 0 and world._actors:cell_count(x, y, x1 - x, y1 - y) <= 4 * #list then
     n = world._actors:collect_between(x, y, x1, y1, found, n)
   else
     for i = 1, #list do n = n + 1; found[n] = list[i] end
@@ -90,7 +90,7 @@ end
 ---@return integer n
 function query.area(world, x, y, width, height)
   local found = world._found
-  local count = collect_boxes(world, x, y, width, height)
+  local count = collect_boxes(world, x, y, x + width, y + height)
   local n = 0
   for i = 1, count do
     local record = found[i]
@@ -132,9 +132,11 @@ end
 function query.sweep(world, x1, y1, x2, y2, width, height)
   local dx, dy = x2 - x1, y2 - y1
   local left, top = x1 < x2 and x1 or x2, y1 < y2 and y1 or y2
-  local reach_x, reach_y = dx < 0 and -dx or dx, dy < 0 and -dy or dy
+  -- (the far sides of the box where it ends, x2 + width, or where it starts: left +
+  -- (|dx| + width) can round below them)
+  local right, bottom = (x1 < x2 and x2 or x1) + width, (y1 < y2 and y2 or y1) + height
   local found = world._found
-  local count = collect_boxes(world, left, top, reach_x + width, reach_y + height)
+  local count = collect_boxes(world, left, top, right, bottom)
   local n = 0
   local point = width == 0 and height == 0
   for i = 1, count do
@@ -144,8 +146,8 @@ function query.sweep(world, x1, y1, x2, y2, width, height)
     if point then -- (the segment rule: a zero-size box inside a zero-size one is met)
       t = segment_enter(x1, y1, dx, dy, record[1], record[2], record[3], record[4])
     else
-      t = box_enter(x1, y1, width, height, dx, dy, record[1], record[2], record[3],
-        record[4])
+      t = box_enter_to(x1, y1, width, height, dx, dy, record[1], record[2], record[3],
+        record[4], x2, y2)
     end
     if t then
       n = n + 1
@@ -157,6 +159,9 @@ function query.sweep(world, x1, y1, x2, y2, width, height)
   for k = 1, #layers do
     local tiles = layers[k]
     local t = segment_first(tiles, x1, y1, dx, dy, set, width, height)
+    -- the box where the sweep ends overlaps a tile: entered, though the rounded times
+    -- (the segment against each tile grown by the box's size) say at the end or later
+    if t == nil and touches(tiles, x2, y2, width, height, set) then t = BELOW_ONE end
     if t then
       local record = records[tiles]
       n = n + 1

@@ -21,6 +21,10 @@ local sweep = {}
 
 sweep.NORMAL_X, sweep.NORMAL_Y, sweep.NORMAL_CORNER = 1, 2, 3
 
+-- The largest number below 1: the time of a contact the box where a motion ends
+-- shows but the rounded entry times put at its end or later.
+local BELOW_ONE = 1 - 2 ^ -53
+
 ---The candidates of one move, as parallel arrays indexed 1..n, filled by the broad phase
 ---(solids.lua) and read by first_contact and the discrete methods. Owned by one world.
 ---@class budge.CandidateSet
@@ -273,9 +277,38 @@ function sweep.box_enter(x, y, w, h, dx, dy, bx, by, bw, bh)
   return enter, enter_x > enter_y and 1 or 2
 end
 
--- The largest number below 1: the time of a contact the step's end box shows but the
--- rounded entry times put at or after the step's end.
-local BELOW_ONE = 1 - 2 ^ -53
+
+---box_enter's time for a motion that ends with the box at (end_x, end_y) (x + dx can
+---round elsewhere), where that box decides what the rounded times cannot: a box that
+---overlaps the other there entered it (at the largest time below 1 when the times say 1
+---or later), and one still short of it on an axis it moves along never did (the times
+---can put the entry an ulp before the end of a motion that ends touching it).
+---@param x number
+---@param y number
+---@param w number
+---@param h number
+---@param dx number
+---@param dy number
+---@param bx number
+---@param by number
+---@param bw number
+---@param bh number
+---@param end_x number
+---@param end_y number
+---@return number? t
+function sweep.box_enter_to(x, y, w, h, dx, dy, bx, by, bw, bh, end_x, end_y)
+  local right, bottom = bx + bw, by + bh
+  if end_x < right and bx < end_x + w and end_y < bottom and by < end_y + h then
+    local t = sweep.box_enter(x, y, w, h, dx, dy, bx, by, bw, bh)
+    if t == nil then return BELOW_ONE end
+    return t
+  end
+  if (dx > 0 and end_x + w <= bx) or (dx < 0 and end_x >= right) or (dy > 0 and end_y + h <= by)
+    or (dy < 0 and end_y >= bottom) then
+    return nil
+  end
+  return (sweep.box_enter(x, y, w, h, dx, dy, bx, by, bw, bh))
+end
 
 ---The axis (1: x, 2: y) across which the box (x, y, w, h) moving by (dx, dy) comes into
 ---the box from (bx, by) to its far sides (right, bottom) last, as box_enter has it (y on a
