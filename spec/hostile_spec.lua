@@ -284,6 +284,216 @@ describe("swept", function()
     assert.is_true(stopped > 2000, "stopped " .. stopped)
     assert.is_true(crossed > 500, "crossed " .. crossed)
   end)
+
+  it("ends no move inside what stops it and reports every crossing it ends in, in random "
+    .. "scenes of solids, oneway solids, sensors, actors and tile layers", function()
+    -- A review's search: slides into corners (the axis nothing blocks is where the line is
+    -- at the contact's time, which rounded an ulp into the wall beside), slides under a
+    -- ceiling with a hair of motion toward it over several steps (a step began where x +
+    -- dx * t put it, an ulp inside a row the step before had not reached), a slide ending
+    -- on a sensor's face (decided an ulp inside it, then set back on the target), a box of
+    -- width 0 whose first step had not reached the tile it ends in. Non-dyadic scenes,
+    -- every response, moves aimed within a few ulps of faces; oracle: query_rect's
+    -- overlap with the box where each move ends, and the hits.
+    local rng = require("fixtures.random").new(20261207)
+    local function nudge(v, k)
+      local e = math.abs(v) * 2 ^ -52
+      return v + k * (e == 0 and 2 ^ -1074 or e)
+    end
+    local function number(low, high)
+      local d = ({1, 3, 7, 10, 997, 1013})[rng(1, 6)]
+      return rng(math.floor(low * d), math.floor(high * d)) / d
+    end
+    local function overlaps(x, y, w, h, bx, by, right, bottom)
+      return bx < x + w and x < right and by < y + h and y < bottom
+    end
+    local answers = {"slide", "cross", "touch", "bounce", false, "slide"}
+    local moves, stopped, crossed = 0, 0, 0
+    for case = 1, 1500 do
+      local world = budge.new_world({cell_size = ({16, 24, 32, 64, 100})[rng(1, 5)]})
+      local things, answer_of = {}, {}
+      local function add(kind, thing, col, row)
+        things[#things + 1] = {kind = kind, thing = thing, col = col, row = row}
+        answer_of[thing] = answer_of[thing] or {}
+        answer_of[thing][(col or 0) * 100 + (row or 0)] = answers[rng(1, #answers)]
+      end
+      for _ = 1, rng(0, 4) do
+        local b = box(number(-150, 150), number(-150, 150), number(0.1, 60), number(0.1, 60))
+        if rng(1, 4) == 1 then b.wall_type = "oneway" end
+        add("solid", world:add_solid(b))
+      end
+      for _ = 1, rng(0, 3) do
+        add("sensor", world:add_sensor(box(number(-150, 150), number(-150, 150),
+          number(0, 60), number(0, 60))))
+      end
+      for _ = 1, rng(0, 2) do
+        add("actor", world:add_actor(box(number(-150, 150), number(-150, 150),
+          number(0.1, 30), number(0.1, 30))))
+      end
+      if rng(1, 2) == 1 then
+        local grid, rows, cols = {}, rng(1, 8), rng(1, 8)
+        for r = 1, rows do
+          grid[r] = {}
+          for c = 1, cols do grid[r][c] = rng(1, 3) == 1 and rng(1, 3) or 0 end
+        end
+        local tw = rng(1, 2) == 1 and rng(1000, 40000) / 997 or ({8, 16, 12.5})[rng(1, 3)]
+        local th = rng(1, 2) == 1 and rng(1000, 40000) / 997 or ({8, 16, 12.5})[rng(1, 3)]
+        local layer = world:add_tiles(grid, tw, th, {x = number(-150, 50), y = number(-150, 50),
+          is_oneway = function(id) return id == 3 end})
+        for r = 1, rows do
+          for c = 1, cols do
+            if grid[r][c] ~= 0 then add(grid[r][c] == 3 and "oneway tile" or "tile", layer, c, r) end
+          end
+        end
+      end
+      local actor = box(number(-200, 200), number(-200, 200), number(0, 30), number(0, 30))
+      if rng(1, 10) == 1 then actor.width = 0 end
+      if rng(1, 10) == 1 then actor.height = 0 end
+      local filtered = rng(1, 3) ~= 1
+      if filtered then
+        actor.filter = function(_, other, col, row)
+          return answer_of[other][(col or 0) * 100 + (row or 0)]
+        end
+      end
+      world:add_actor(actor)
+      for _ = 1, 4 do
+        local dx, dy = number(-100, 100), number(-100, 100)
+        if rng(1, 4) == 1 then dx, dy = number(-1500, 1500), number(-1500, 1500) end
+        if #things > 0 and rng(1, 4) ~= 1 then -- the box's end at a face, within ulps
+          local aim = things[rng(1, #things)]
+          local bx, by, right, bottom
+          if aim.col then
+            local t = aim.thing
+            bx, by = t.x + (aim.col - 1) * t.tile_width, t.y + (aim.row - 1) * t.tile_height
+            right, bottom = t.x + aim.col * t.tile_width, t.y + aim.row * t.tile_height
+          else
+            local b = aim.thing
+            bx, by, right, bottom = b.x, b.y, b.x + b.width, b.y + b.height
+          end
+          local face, k = rng(1, 4), rng(-3, 3)
+          if face == 1 then dx = nudge(bx - actor.width, k) - actor.x
+          elseif face == 2 then dx = nudge(right, k) - actor.x
+          elseif face == 3 then dy = nudge(by - actor.height, k) - actor.y
+          else dy = nudge(bottom, k) - actor.y end
+          if rng(1, 3) == 1 then
+            if face <= 2 then dy = rng(1, 2) == 1 and 0 or number(-40, 40)
+            else dx = rng(1, 2) == 1 and 0 or number(-40, 40) end
+          end
+        end
+        if dx == 0 and dy == 0 then dx = 1 / 3 end
+        local x0, y0, w, h = actor.x, actor.y, actor.width, actor.height
+        local x, y, n, hits = world:move(actor, dx, dy, "swept")
+        moves = moves + 1
+        for _, entry in ipairs(things) do
+          local t, kind = entry.thing, entry.kind
+          local bx, by, right, bottom
+          if entry.col then
+            bx, by = t.x + (entry.col - 1) * t.tile_width, t.y + (entry.row - 1) * t.tile_height
+            right, bottom = t.x + entry.col * t.tile_width, t.y + entry.row * t.tile_height
+          else
+            bx, by, right, bottom = t.x, t.y, t.x + t.width, t.y + t.height
+          end
+          local answer = "slide"
+          if kind == "actor" then answer = filtered and answer_of[t][0] or false
+          elseif filtered then answer = answer_of[t][(entry.col or 0) * 100 + (entry.row or 0)] end
+          if kind == "sensor" then answer = answer and "cross" end
+          local oneway = kind == "oneway tile" or kind == "solid" and t.wall_type == "oneway"
+          if overlaps(x, y, w, h, bx, by, right, bottom)
+            and not overlaps(x0, y0, w, h, bx, by, right, bottom) then
+            local label = ("case %d: %s answering %s, the move from %.17g, %.17g by %.17g, "
+              .. "%.17g ends at %.17g, %.17g"):format(case, kind, tostring(answer), x0, y0, dx,
+              dy, x, y)
+            if answer == "cross" then
+              local met = false
+              for i = 1, n do
+                met = met or hits[i].other == t and hits[i].col == entry.col
+                  and hits[i].response == "cross"
+              end
+              assert.is_true(met, label .. " inside it, no crossing")
+              crossed = crossed + 1
+            elseif answer and not oneway then
+              error(label .. " inside it")
+            end
+          end
+        end
+        if n > 0 and hits[1].response ~= "cross" then stopped = stopped + 1 end
+      end
+    end
+    assert.are.equal(6000, moves)
+    assert.is_true(stopped > 500 and crossed > 100, stopped .. " stopped, " .. crossed
+      .. " crossed")
+  end)
+
+  it("ends no move inside a wall beside what stops it, nor inside a row it slides under, and "
+    .. "crosses no sensor it ends on the face of (a review's cases)", function()
+    local function inside(world, actor, thing)
+      local _, n = world:query_rect(actor.x, actor.y, actor.width, actor.height, nil,
+        function(item) return item == thing end)
+      return n > 0
+    end
+    -- a ceiling stops it; where the line is then on x was an ulp inside the wall beside
+    local world = budge.new_world()
+    local wall = world:add_solid(box(-177.14285714285714, -293.99999999999983, 50, 231))
+    local ceiling = world:add_solid(box(-377.14285714285714, -244, 200, 50))
+    local actor = world:add_actor(box(-205.72059034245601, -193.99999999999983,
+      28.577733199598796, 31))
+    actor.filter = function() return "touch" end
+    world:move(actor, 24.187142854444158, -55.613333334884715, "swept")
+    assert.is_false(inside(world, actor, wall) or inside(world, actor, ceiling))
+    assert.are.equal(-194, actor.y)
+    -- a wall stops it; where the line is then on y was an ulp inside the floor below
+    world = budge.new_world()
+    wall = world:add_solid(box(87.3, -100, 10, 30))
+    local floor = world:add_solid(box(50, -64.051153460381144, 30, 10))
+    actor = world:add_actor(box(65.399999999999977, -86.525576730190579, 21.899999999999999,
+      22.474423269809428))
+    world:move(actor, 32.389930898321815, 16.516549648946821, "swept")
+    assert.is_false(inside(world, actor, wall) or inside(world, actor, floor))
+    -- sliding under a row of tiles with a hair of motion up, over 4 steps of 16 px: a step
+    -- began an ulp inside the row the step before had not reached
+    for _, height in ipairs({0, 1, 8}) do
+      world = budge.new_world({cell_size = 16})
+      local layer = world:add_tiles({{0, 2, 2, 1}}, 12.5, 16, {x = -67.294884653961887, y = -130})
+      actor = world:add_actor(box(-65, -114, 14.237713139418254, height))
+      world:move(actor, 48.714285714285715, -2.8421709430404007e-14, "swept")
+      assert.is_false(inside(world, actor, layer), "height " .. height)
+    end
+    -- a slide ending on a sensor's face: decided an ulp inside it, then set on the target
+    world = budge.new_world({cell_size = 32})
+    world:add_solid(box(242195, 242306, 37.142857142857146, 79.075225677031099))
+    local sensor = world:add_sensor(box(241600.38095238095, 232277, 500, 20000))
+    actor = world:add_actor(box(242251.66666666666, 242272.28986960882, 2.2597793380140421, 0))
+    actor.filter = function() return "slide" end
+    local x, _, n, hits = world:move(actor, -151.28571428571428, 161.42857142857142, "swept")
+    assert.are.same({242100.38095238095, 1, "slide"}, {x, n, hits[1].response})
+    assert.is_false(inside(world, actor, sensor))
+    -- a box of width 0 moving down a tile's face by a hair across it: the step before the
+    -- last had not reached the tile (cross) it ends in
+    world = budge.new_world({cell_size = 64})
+    local tiles = world:add_tiles({{0, 0}, {0, 0}, {1, 2}, {0, 0}, {3, 0}, {3, 1}, {1, 0},
+      {0, 1}}, 12.5, 37.422266800401204, {x = 53, y = -32.666666666666664})
+    actor = world:add_actor(box(65.5, 185.66196587223237, 0, 27.4284304047384))
+    actor.filter = function() return "cross" end
+    _, _, n, hits = world:move(actor, 1.4210854715202004e-14, 48, "swept")
+    assert.is_true(inside(world, actor, tiles))
+    local crossed = {}
+    for i = 1, n do crossed[#crossed + 1] = hits[i].col .. "," .. hits[i].row end
+    assert.are.same({"2,6", "2,8"}, crossed) -- (the first from the start: it is beside it)
+  end)
+
+  it("reports a sensor it starts inside with no side, when a wall stops it at once", function()
+    local world = budge.new_world()
+    local zone = world:add_sensor(box(0, 0, 10, 10))
+    world:add_solid(box(10, -5, 5, 20))
+    local actor = world:add_actor(box(0, 0, 10, 10))
+    for _, move in ipairs({{5, 0}, {5, 3}}) do
+      local _, _, n, hits = world:move(actor, move[1], move[2], "swept")
+      local found
+      for i = 1, n do if hits[i].other == zone then found = hits[i] end end
+      assert.are.same({"cross", 0, 0, 0}, {found.response, found.t, found.nx, found.ny})
+      assert.is_nil(found.side)
+    end
+  end)
 end)
 
 describe("the world's range", function()

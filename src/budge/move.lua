@@ -313,14 +313,11 @@ local function add_crossing(world, set, i, side, t)
     CROSS, t)
 end
 
--- Candidate i's far sides (right, bottom): its box's x + w and y + h, or for a tile (its
--- record false) the layer's own edges, origin + col * tile, which the layer's scans and
--- queries compare with: (origin + (col - 1) * tile) + tile can round off them when the
--- origin or the tile size is not a whole number.
 -- How far along the box's path on the axis candidate i of the set is entered (negative:
 -- the box overlaps it where it starts), or nil when the path, from `pos` until the
 -- leading face reaches `far`, never overlaps it (strictly across the axis too).
--- (far_sides written out: through the call, `lua bench/instructions.lua --lua lua5.4 --way
+-- A tile's far sides are its layer's edges (sweep.far_sides, written out here: through
+-- the call, `lua bench/instructions.lua --lua lua5.4 --way
 -- blocking --count 1000 --frames 5` ran 85852 instructions per move instead of 84622;
 -- 83463 with every far side x + w, 2026-12-03)
 local function entry_distance(set, i, is_x, forward, pos, edge, far, cross_lo, cross_hi)
@@ -730,9 +727,10 @@ end
 -- `contact`, as "cross" hits at time t0 + (1 - t0) * fraction of the move; once per move,
 -- as report_crossings does. When this step is where the motion ends, with the box at
 -- (end_x, end_y), that box decides what the times cannot at a rounding: one that overlaps
--- the candidate there entered it (at `contact`, or the end, when the times say later),
--- and one still short of it on an axis it moves along never did (the times can put the
--- entry an ulp before the end of a move that ends touching it).
+-- the candidate there entered it (at `contact`, or the end, when the times say later; at
+-- 0 with no side when it started inside, even stopped at 0), and one still short of it on
+-- an axis it moves along never did (the times can put the entry an ulp before the end of
+-- a move that ends touching it).
 local function report_swept_crossings(world, cross, x, y, width, height, dx, dy, from, to,
                                       contact, t0, end_x, end_y)
   local xs, ys, ws, hs = cross.x, cross.y, cross.w, cross.h
@@ -743,16 +741,24 @@ local function report_swept_crossings(world, cross, x, y, width, height, dx, dy,
     if end_x ~= nil then
       local right, bottom = far_sides(cross, i)
       if end_x < right and bx < end_x + width and end_y < bottom and by < end_y + height then
-        if enter == nil or not (enter < to and enter < contact) then
-          inside, enter = true, contact < 1 and contact or 1
+        -- (whatever window the times put its entry in: a step before this one may not
+        -- have seen it, its end box an ulp short of it; a tile the move has reported
+        -- already is left, as a record is by its stamp)
+        inside = cross.record[i] ~= false
+          or not has_tile(world, 1, cross.other[i], cross.col[i], cross.row[i])
+        if enter ~= nil and axis == 0 then -- luacheck: ignore 542
+          -- (it started inside: at 0, with no side, even stopped at 0)
+        elseif enter == nil or not (enter < to and enter < contact) then
+          enter = contact < 1 and contact or 1
           axis = entry_axis(x, y, width, height, dx, dy, bx, by, right, bottom)
         end
+        if not inside then enter = nil end
       elseif (dx > 0 and end_x + width <= bx) or (dx < 0 and end_x >= right)
         or (dy > 0 and end_y + height <= by) or (dy < 0 and end_y >= bottom) then
         enter = nil
       end
     end
-    if enter and enter >= from and (inside or enter < to and enter < contact) then
+    if enter and (inside or enter >= from and enter < to and enter < contact) then
       local side
       if axis == 1 then side = dx > 0 and "right" or "left"
       elseif axis == 2 then side = dy > 0 and "floor" or "ceiling" end
@@ -761,11 +767,39 @@ local function report_swept_crossings(world, cross, x, y, width, height, dx, dy,
   end
 end
 
+-- The position on one axis (is_x) of a box stopped on the other, where the straight line
+-- put it (pos, with the other axis at cross), moved back out of any candidate of the set
+-- it overlaps there that, where the step began (from, from_cross), it overlapped across
+-- but not on this axis: one that only this axis's motion brings it into, at a rounding
+-- of the line (first_contact's times have it entered later). A oneway candidate only
+-- moving down onto it from above (start_y: where the motion began).
+local function keep_out(set, is_x, pos, cross, from, from_cross, size, cross_size, step,
+                        start_y)
+  if step == 0 then return pos end
+  local lows, cross_lows, oneway = set.x, set.y, set.oneway
+  if not is_x then lows, cross_lows = set.y, set.x end
+  for i = 1, set.n do
+    local right, bottom = far_sides(set, i)
+    local high, cross_high = right, bottom
+    if not is_x then high, cross_high = bottom, right end
+    local low, cross_low = lows[i], cross_lows[i]
+    if low < pos + size and pos < high and cross_low < cross + cross_size and cross < cross_high
+      and not (low < from + size and from < high)
+      and cross_low < from_cross + cross_size and from_cross < cross_high
+      and (not oneway[i] or not is_x and step > 0 and low >= start_y + size) then
+      if step > 0 then pos = before(low, size, from) else pos = high end
+    end
+  end
+  return pos
+end
+
 -- Travels from (x, y) along (dx, dy) in chunks no longer than a cell, so a huge move
 -- looks at a thin band of the world, until the first contact; this motion is the part
--- of the move from time t0 on. Returns the position reached and, on a contact, whether x
--- and y are blocked, the fraction travelled and the response that stopped it.
-local function advance(world, x, y, dx, dy, round, t0)
+-- of the move from time t0 on, and ends at (goal_x, goal_y) (x + dx, or the move's target
+-- on an axis nothing has stopped: x + dx can round off it). Returns the position reached
+-- and, on a contact, whether x and y are blocked, the fraction travelled and the response
+-- that stopped it.
+local function advance(world, x, y, dx, dy, round, t0, goal_x, goal_y)
   local probe = world._probe
   local actor, filter = probe.actor, probe.filter
   local width, height = actor.width, actor.height
@@ -773,14 +807,14 @@ local function advance(world, x, y, dx, dy, round, t0)
   -- only solids and tiles block an actor with no filter, and sensors are crossed
   if filter == nil and world._sensor_count == 0 then
     enter, leave = clip_to_bounds(world, x, y, width, height, dx, dy)
-    -- the box where the move ends is looked at whatever the clip's roundings say: x + dx
-    -- and (x + dx) + width are not the clip's arithmetic
-    local bounds, end_x, end_y = world._bounds, x + dx, y + dy
-    if end_x < bounds.max_x and bounds.min_x < end_x + width and end_y < bounds.max_y
-      and bounds.min_y < end_y + height then
+    -- the box where the motion ends is looked at whatever the clip's roundings say: the
+    -- goal and its far sides are not the clip's arithmetic
+    local bounds = world._bounds
+    if goal_x < bounds.max_x and bounds.min_x < goal_x + width and goal_y < bounds.max_y
+      and bounds.min_y < goal_y + height then
       if enter == nil then enter = 1 end
       leave = 1
-    elseif enter == nil then return end_x, end_y, nil end
+    elseif enter == nil then return goal_x, goal_y, nil end
   end
   -- The steps are those of the whole motion, whatever part of it is looked at: the result
   -- is the same with or without sensors, a filter, or solids far away.
@@ -791,15 +825,17 @@ local function advance(world, x, y, dx, dy, round, t0)
   if first > chunks then first = chunks end
   if last < first then last = first end
   world._round = round
+  local from_x, from_y = x + dx * ((first - 1) / chunks), y + dy * ((first - 1) / chunks)
   for k = first, last do
     local t_from = (k - 1) / chunks
     local t_to = k == chunks and 1 or k / chunks
-    local from_x, from_y = x + dx * t_from, y + dy * t_from
-    local step_x, step_y = dx * (t_to - t_from), dy * (t_to - t_from)
-    -- where this step ends: the last one where the move ends (x + dx), which the box's
-    -- far side there, (x + dx) + width, must not pass into what stops it
-    local end_x, end_y = from_x + step_x, from_y + step_y
-    if k == chunks then end_x, end_y = x + dx, y + dy end
+    -- Each step begins where the one before ended (one from x + dx * t_from could begin an
+    -- ulp inside what the end box before it was checked against) and ends at x + dx *
+    -- t_to, the last at the goal: the box's far side there, goal_x + width, must not pass
+    -- into what stops it.
+    local end_x, end_y = x + dx * t_to, y + dy * t_to
+    if k == chunks then end_x, end_y = goal_x, goal_y end
+    local step_x, step_y = end_x - from_x, end_y - from_y
     local left, far_x = from_x, end_x + width
     if end_x < from_x then left, far_x = end_x, from_x + width end
     local top, far_y = from_y, end_y + height
@@ -809,9 +845,10 @@ local function advance(world, x, y, dx, dy, round, t0)
       end_y)
     local contact = t and t_from + (t_to - t_from) * t
     if not t and crossing.n > 0 then -- (with a contact: below, where it stops)
-      if k ~= chunks then end_x, end_y = nil, nil end
+      local last_step = k == chunks
       report_swept_crossings(world, crossing, x, y, width, height, dx, dy,
-        k == first and -HUGE or t_from, k == last and HUGE or t_to, HUGE, t0, end_x, end_y)
+        k == first and -HUGE or t_from, k == last and HUGE or t_to, HUGE, t0,
+        last_step and end_x or nil, last_step and end_y or nil)
     end
     if t then
       local touch, normal = set.touch, set.normal
@@ -855,6 +892,14 @@ local function advance(world, x, y, dx, dy, round, t0)
           add_hit(world, other[i], side, cols[i], rows[i], ys[i], xs[i], ids[i], chosen, time)
         end
       end
+      -- the axis nothing blocks is where the straight line is at the contact's time,
+      -- which can round an ulp into a candidate the times have it enter just after:
+      -- kept out of it (the next slide meets it)
+      if not blocked_x then
+        new_x = keep_out(set, true, new_x, new_y, from_x, from_y, width, height, step_x, y)
+      elseif not blocked_y then
+        new_y = keep_out(set, false, new_y, new_x, from_y, from_x, height, width, step_y, y)
+      end
       if crossing.n > 0 then
         world._round = round
         report_swept_crossings(world, crossing, x, y, width, height, dx, dy,
@@ -862,8 +907,9 @@ local function advance(world, x, y, dx, dy, round, t0)
       end
       return new_x, new_y, blocked_x, blocked_y, contact, response
     end
+    from_x, from_y = end_x, end_y
   end
-  return x + dx, y + dy, nil
+  return goal_x, goal_y, nil
 end
 
 local function move_swept(world, actor, dx, dy, filter)
@@ -872,12 +918,15 @@ local function move_swept(world, actor, dx, dy, filter)
   probe.actor, probe.filter = actor, filter
   local x, y = actor.x, actor.y
   local target_x, target_y = x + dx, y + dy
+  -- where the motion on each axis ends: the target until something blocks that axis
+  -- (a slide's x + dx * rest can round off it)
+  local goal_x, goal_y = target_x, target_y
   local t0 = 0
   for slide = 1, MAX_SLIDES do
     if dx == 0 and dy == 0 then break end
     local blocked_x, blocked_y, travelled, response
     x, y, blocked_x, blocked_y, travelled, response = advance(world, x, y, dx, dy,
-      slide * 2 - 1, t0)
+      slide * 2 - 1, t0, goal_x, goal_y)
     if blocked_x == nil or response == TOUCH then break end
     -- slide (or bounce): what is left of the move, less (or reflecting) the blocked part
     local rest = 1 - travelled
@@ -885,6 +934,8 @@ local function move_swept(world, actor, dx, dy, filter)
     local keep = response == BOUNCE and -rest or 0
     dx = blocked_x and dx * keep or dx * rest
     dy = blocked_y and dy * keep or dy * rest
+    if blocked_x then goal_x = x + dx end
+    if blocked_y then goal_y = y + dy end
   end
   -- the slides' pieces, each rounded, can add up to an ulp more than the move: never
   -- further than asked
