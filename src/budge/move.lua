@@ -779,15 +779,16 @@ local function keep_out(set, is_x, pos, cross, from, from_cross, size, cross_siz
   local lows, cross_lows, oneway = set.x, set.y, set.oneway
   if not is_x then lows, cross_lows = set.y, set.x end
   for i = 1, set.n do
-    local right, bottom = far_sides(set, i)
-    local high, cross_high = right, bottom
-    if not is_x then high, cross_high = bottom, right end
     local low, cross_low = lows[i], cross_lows[i]
-    if low < pos + size and pos < high and cross_low < cross + cross_size and cross < cross_high
-      and not (low < from + size and from < high)
-      and cross_low < from_cross + cross_size and from_cross < cross_high
-      and (not oneway[i] or not is_x and step > 0 and low >= start_y + size) then
-      if step > 0 then pos = before(low, size, from) else pos = high end
+    if low < pos + size and cross_low < cross + cross_size then -- (no far side needed yet)
+      local right, bottom = far_sides(set, i)
+      local high, cross_high = right, bottom
+      if not is_x then high, cross_high = bottom, right end
+      if pos < high and cross < cross_high and not (low < from + size and from < high)
+        and cross_low < from_cross + cross_size and from_cross < cross_high
+        and (not oneway[i] or not is_x and step > 0 and low >= start_y + size) then
+        if step > 0 then pos = before(low, size, from) else pos = high end
+      end
     end
   end
   return pos
