@@ -463,10 +463,7 @@ describe("budge.bump", function()
       -- oracle: the rectangle where the item ends overlaps the other exactly never, and
       -- where the goal's rectangle overlaps it, move and project report a collision with it.
       local rng = random_source.new(20261205)
-      local function nudge(v, k)
-        local e = math.abs(v) * 2 ^ -52
-        return v + k * (e == 0 and 2 ^ -1074 or e)
-      end
+      local aim = require("fixtures.aim")
       local function overlap(x1, y1, w1, h1, x2, y2, w2, h2)
         return x1 < x2 + w2 and x2 < x1 + w1 and y1 < y2 + h2 and y2 < y1 + h1
       end
@@ -474,18 +471,14 @@ describe("budge.bump", function()
       local goal_inside = 0
       for case = 1, 4000 do
         local is_x, forward = case % 2 == 0, rng(1, 2) == 1
-        local wide = rng(1, 2) == 1
-        local size = wide and 300 + rng(0, 2500000) / 1000 or 8 + rng(0, 56000) / 1000
-        local delta = wide and 1 + rng(0, 60000) / 1009 or rng(100, 8000) / 1009
-        if not forward then delta = -delta end
+        local size, delta = aim.size_and_delta(rng, forward)
         local depth, face = rng(1000, 40000) / 997, rng(-1000000, 1000000) / 997
         local world = bump.newWorld(64)
         local ox, oy = is_x and face or 0, is_x and 0 or face
         local ow, oh = is_x and depth or 10, is_x and 10 or depth
         world:add("other", ox, oy, ow, oh)
-        local pos = forward and nudge(face - size - delta, rng(-3, 3))
-          or nudge(face + depth - delta, rng(-3, 3))
-        local across = rng(1, 3) == 1 and (rng(1, 2) == 1 and 1 or -1) * rng(1, 5000) / 1009 or 0
+        local pos = aim.start(rng, forward, size, delta, face, face + depth)
+        local across = aim.across(rng)
         local x, y = is_x and pos or -across, is_x and -across or pos
         local w, h = is_x and size or 10, is_x and 10 or size
         local goal_x, goal_y = x + (is_x and delta or across), y + (is_x and across or delta)

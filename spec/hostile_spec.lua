@@ -206,10 +206,7 @@ describe("swept", function()
     -- where the times can round either way (one that ended touching it was reported
     -- crossing it).
     local rng = require("fixtures.random").new(20261203)
-    local function nudge(v, k)
-      local e = math.abs(v) * 2 ^ -52
-      return v + k * (e == 0 and 2 ^ -1074 or e)
-    end
+    local aim = require("fixtures.aim")
     local kinds = {"solid", "tiles", "actor", "sensor"}
     local responses = {"none", "slide", "bounce", "touch"}
     local checked, stopped, crossed = 0, 0, 0
@@ -218,10 +215,7 @@ describe("swept", function()
       local response = responses[math.floor(case / 8) % 4 + 1]
       if kind == "actor" and response == "none" then response = "slide" end
       local is_x, forward = case % 2 == 0, rng(1, 2) == 1
-      local wide = rng(1, 2) == 1
-      local size = wide and 300 + rng(0, 2500000) / 1000 or 8 + rng(0, 56000) / 1000
-      local delta = wide and 1 + rng(0, 60000) / 1009 or rng(100, 8000) / 1009
-      if not forward then delta = -delta end
+      local size, delta = aim.size_and_delta(rng, forward)
       local tile = rng(1, 3) == 1 and 16 or rng(1000, 40000) / 997
       local world = budge.new_world({cell_size = 64})
       local thing, low, high
@@ -245,9 +239,8 @@ describe("swept", function()
         else world:add_actor(thing) end
         low, high = face, face + tile
       end
-      local pos = forward and nudge(low - size - delta, rng(-3, 3)) or nudge(high - delta,
-        rng(-3, 3))
-      local across = rng(1, 3) == 1 and (rng(1, 2) == 1 and 1 or -1) * rng(1, 5000) / 1009 or 0
+      local pos = aim.start(rng, forward, size, delta, low, high)
+      local across = aim.across(rng)
       local actor = is_x and box(pos, -across, size, 10) or box(-across, pos, 10, size)
       local function overlaps(x, y)
         local _, n = world:query_rect(x, y, actor.width, actor.height, nil,
@@ -296,10 +289,7 @@ describe("swept", function()
     -- every response, moves aimed within a few ulps of faces; oracle: query_rect's
     -- overlap with the box where each move ends, and the hits.
     local rng = require("fixtures.random").new(20261207)
-    local function nudge(v, k)
-      local e = math.abs(v) * 2 ^ -52
-      return v + k * (e == 0 and 2 ^ -1074 or e)
-    end
+    local nudge = require("fixtures.aim").nudge
     local function number(low, high)
       local d = ({1, 3, 7, 10, 997, 1013})[rng(1, 6)]
       return rng(math.floor(low * d), math.floor(high * d)) / d

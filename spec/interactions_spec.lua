@@ -866,17 +866,11 @@ describe("query_sweep", function()
     -- touched at the end listed); with a one-tile layer (its tile's far side the layer's
     -- edge), 145 of 4000 (overlapped by an ulp, left out).
     local rng = random_source.new(20261206)
-    local function nudge(v, k)
-      local e = math.abs(v) * 2 ^ -52
-      return v + k * (e == 0 and 2 ^ -1074 or e)
-    end
+    local aim = require("fixtures.aim")
     local out, listed = {}, 0
     for case = 1, 4000 do
       local is_x, forward = case % 2 == 0, rng(1, 2) == 1
-      local wide = rng(1, 2) == 1
-      local size = wide and 300 + rng(0, 2500000) / 1000 or 8 + rng(0, 56000) / 1000
-      local delta = wide and 1 + rng(0, 60000) / 1009 or rng(100, 8000) / 1009
-      if not forward then delta = -delta end
+      local size, delta = aim.size_and_delta(rng, forward)
       local depth, face = rng(1000, 40000) / 997, rng(-1000000, 1000000) / 997
       local world = budge.new_world({cell_size = 64})
       local thing
@@ -884,9 +878,8 @@ describe("query_sweep", function()
         thing = world:add_solid(is_x and box(face, 0, depth, 10) or box(0, face, 10, depth))
       elseif is_x then thing = world:add_tiles({{1}}, depth, 16, {x = face, y = -3})
       else thing = world:add_tiles({{1}}, 16, depth, {x = -3, y = face}) end
-      local pos = forward and nudge(face - size - delta, rng(-3, 3))
-        or nudge(face + depth - delta, rng(-3, 3))
-      local across = rng(1, 3) == 1 and (rng(1, 2) == 1 and 1 or -1) * rng(1, 5000) / 1009 or 0
+      local pos = aim.start(rng, forward, size, delta, face, face + depth)
+      local across = aim.across(rng)
       local x, y = is_x and pos or -across, is_x and -across or pos
       local w, h = is_x and size or 10, is_x and 10 or size
       local dx, dy = is_x and delta or across, is_x and across or delta
