@@ -896,6 +896,19 @@ describe("query_sweep", function()
     assert.is_true(listed > 1000, "listed " .. listed)
   end)
 
+  it("lists a box a point sweep ends inside by an ulp (a review's case)", function()
+    local world = budge.new_world({cell_size = 64})
+    local actor = world:add_actor(box(-17.571428571428573, 96, 25.213640922768306, 42))
+    local x, y, dx, dy = -91.666666666666671, -35.799999999999997, 74.095238095238102,
+      167.37142857142857
+    assert.is_true(actor.x < x + dx) -- (the end point, an ulp inside it)
+    assert.are.equal(1, select(2, world:query_point(x + dx, y + dy)))
+    local out, n, out_t = world:query_sweep(x, y, 0, 0, dx, dy, {}, {})
+    assert.are.same({1, actor}, {n, out[1]})
+    assert.is_true(out_t[1] < 1)
+    assert.are.equal(1, select(2, world:query_segment(x, y, x + dx, y + dy)))
+  end)
+
   it("takes a filter, which may leave the probing actor out", function()
     local world = budge.new_world()
     local me = world:add_actor(box(0, 0, 10, 10))

@@ -144,7 +144,13 @@ function query.sweep(world, x1, y1, x2, y2, width, height)
     found[i] = nil
     local t
     if point then -- (the segment rule: a zero-size box inside a zero-size one is met)
-      t = segment_enter(x1, y1, dx, dy, record[1], record[2], record[3], record[4])
+      local bx, by = record[1], record[2]
+      t = segment_enter(x1, y1, dx, dy, bx, by, record[3], record[4])
+      -- the point where the sweep ends inside it: entered, though the rounded times say
+      -- at the end or later (as box_enter_to has it for a box)
+      if t == nil and bx < x2 and x2 < bx + record[3] and by < y2 and y2 < by + record[4] then
+        t = BELOW_ONE
+      end
     else
       t = box_enter_to(x1, y1, width, height, dx, dy, record[1], record[2], record[3],
         record[4], x2, y2)
