@@ -27,7 +27,7 @@ local hits = require(here .. ".hits")
 
 local overlaps = box.overlaps
 local before, first_contact, far_sides = sweep.before, sweep.first_contact, sweep.far_sides
-local entry_axis = sweep.entry_axis
+local entry_axis, sweep_ends = sweep.entry_axis, sweep.ends
 local NORMAL_X, NORMAL_Y = sweep.NORMAL_X, sweep.NORMAL_Y
 local tile_face, tile_face_scan, tile_stop = layer.tile_face, layer.tile_face_scan,
   layer.tile_stop
@@ -740,21 +740,20 @@ local function report_swept_crossings(world, cross, x, y, width, height, dx, dy,
     local inside = false
     if end_x ~= nil then
       local right, bottom = far_sides(cross, i)
-      if end_x < right and bx < end_x + width and end_y < bottom and by < end_y + height then
+      local ends = sweep_ends(width, height, dx, dy, bx, by, right, bottom, end_x, end_y)
+      if ends > 0 then
         -- (whatever window the times put its entry in: a step before this one may not
         -- have seen it, its end box an ulp short of it; a tile the move has reported
-        -- already is left, as a record is by its stamp)
+        -- already is left, as a record is by its stamp. One it started inside stays at
+        -- 0 with no side, even stopped at 0.)
         inside = cross.record[i] ~= false
           or not has_tile(world, 1, cross.other[i], cross.col[i], cross.row[i])
-        if enter ~= nil and axis == 0 then -- luacheck: ignore 542
-          -- (it started inside: at 0, with no side, even stopped at 0)
-        elseif enter == nil or not (enter < to and enter < contact) then
+        if not inside then enter = nil
+        elseif axis ~= 0 and (enter == nil or not (enter < to and enter < contact)) then
           enter = contact < 1 and contact or 1
           axis = entry_axis(x, y, width, height, dx, dy, bx, by, right, bottom)
         end
-        if not inside then enter = nil end
-      elseif (dx > 0 and end_x + width <= bx) or (dx < 0 and end_x >= right)
-        or (dy > 0 and end_y + height <= by) or (dy < 0 and end_y >= bottom) then
+      elseif ends < 0 then
         enter = nil
       end
     end

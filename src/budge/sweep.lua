@@ -297,17 +297,35 @@ end
 ---@param end_y number
 ---@return number? t
 function sweep.box_enter_to(x, y, w, h, dx, dy, bx, by, bw, bh, end_x, end_y)
-  local right, bottom = bx + bw, by + bh
-  if end_x < right and bx < end_x + w and end_y < bottom and by < end_y + h then
-    local t = sweep.box_enter(x, y, w, h, dx, dy, bx, by, bw, bh)
-    if t == nil then return BELOW_ONE end
-    return t
-  end
+  local ends = sweep.ends(w, h, dx, dy, bx, by, bx + bw, by + bh, end_x, end_y)
+  if ends < 0 then return nil end
+  local t = sweep.box_enter(x, y, w, h, dx, dy, bx, by, bw, bh)
+  if t == nil and ends > 0 then return BELOW_ONE end
+  return t
+end
+
+---Where a box (w, h) moving by (dx, dy) ends, at (end_x, end_y), against the box from
+---(bx, by) to its far sides (right, bottom): 1 when it overlaps it there (it entered it),
+----1 when it is still short of it on an axis it moves along (it never entered it: on
+---that axis it was short all along), 0 otherwise (the times decide).
+---@param w number
+---@param h number
+---@param dx number
+---@param dy number
+---@param bx number
+---@param by number
+---@param right number
+---@param bottom number
+---@param end_x number
+---@param end_y number
+---@return integer
+function sweep.ends(w, h, dx, dy, bx, by, right, bottom, end_x, end_y)
+  if end_x < right and bx < end_x + w and end_y < bottom and by < end_y + h then return 1 end
   if (dx > 0 and end_x + w <= bx) or (dx < 0 and end_x >= right) or (dy > 0 and end_y + h <= by)
     or (dy < 0 and end_y >= bottom) then
-    return nil
+    return -1
   end
-  return (sweep.box_enter(x, y, w, h, dx, dy, bx, by, bw, bh))
+  return 0
 end
 
 ---The axis (1: x, 2: y) across which the box (x, y, w, h) moving by (dx, dy) comes into
