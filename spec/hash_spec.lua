@@ -66,22 +66,33 @@ local function swept(p)
   return p.cross, low, p.cross_end - p.cross, length
 end
 
--- Every cell's pack holds its records' boxes, in the cell's order.
+-- Every cell's run of the store holds its records' boxes, in the cell's order, inside its
+-- room, and no two cells' rooms overlap.
 local function check_packs(h)
-  local cells = 0
+  local cells, rooms = 0, {}
+  local store, first, last, room = h._store, h._first, h._last, h._room
   for key, cell in pairs(h._cells) do -- (a spec: pairs is fine here)
-    local pack = cell.pack
-    assert(pack, "a packed hash's cell has no pack")
-    assert.are.equal(pack, h._packs[key]) -- (the scan finds it by the key)
-    assert.are.same({#cell * 6 + 1, #cell * 6 - 5}, {#pack, pack[1]})
+    local cx = (key - 2 ^ 25 * (2 ^ 26 + 1)) % 2 ^ 26
+    if cx >= 2 ^ 25 then cx = cx - 2 ^ 26 end
+    local cy = (key - 2 ^ 25 * (2 ^ 26 + 1) - cx) / 2 ^ 26
+    assert(cx >= h._gx0 and cx <= h._gx1 and cy >= h._gy0 and cy <= h._gy1,
+      "a cell without a slot")
+    local slot = (cy - h._gy0) * h._gw + (cx - h._gx0) + 1
+    if h._gw == 2 ^ 26 then assert.are.equal(key, slot) end -- (sparse: the key)
+    assert.are.equal(#cell * 6, last[slot] + 6 - first[slot])
+    assert.is_true(last[slot] + 6 <= room[slot] and room[slot] <= h._top)
     for i, rec in ipairs(cell) do
-      local base = i * 6 - 5
+      local base = first[slot] + (i - 1) * 6
       assert.are.same({rec[1], rec[2], rec[1] + rec[3], rec[2] + rec[4], rec.oneway == true, rec},
-        {pack[base + 1], pack[base + 2], pack[base + 3], pack[base + 4], pack[base + 5],
-          pack[base + 6]})
+        {store[base + 1], store[base + 2], store[base + 3], store[base + 4], store[base + 5],
+          store[base + 6]})
     end
+    if room[slot] > first[slot] then rooms[#rooms + 1] = {first[slot], room[slot]} end
     cells = cells + 1
   end
+  assert.are.equal(cells, #h._cx)
+  table.sort(rooms, function(a, b) return a[1] < b[1] end)
+  for i = 2, #rooms do assert.is_true(rooms[i - 1][2] <= rooms[i][1], "rooms overlap") end
   return cells
 end
 
@@ -89,6 +100,7 @@ describe("Hash:axis_stop over packed cells", function()
   it("stops where the records' own scan and a brute force over every record do", function()
     local random = random_source.new(4242)
     local compared, stopped, ties, packed_scans, with_big = 0, 0, 0, 0, 0
+    local sparse, dense, far_scans = 0, 0, 0
     for scene = 1, 60 do
       local dyadic = scene % 2 == 0
       local cell_size = ({16, 32, 64, 50})[scene % 4 + 1]
@@ -104,6 +116,10 @@ describe("Hash:axis_stop over packed cells", function()
         }
         if random(0, 40) == 0 then -- more than BIG_CELLS cells: kept in the big list
           rec[3], rec[4] = random(2000, 3000), random(2000, 3000)
+        elseif scene % 3 == 0 and random(0, 15) == 0 then
+          -- far from the rest: the cells in use no longer fill their rectangle, and the
+          -- slots become the cells' keys
+          rec[random(1, 2)] = random(-1, 1) * 2 ^ 17 + random(-100, 100)
         end
         local twin = {rec[1], rec[2], rec[3], rec[4], oneway = rec.oneway}
         packed:insert(rec, rec[1], rec[2], rec[3], rec[4])
@@ -119,8 +135,10 @@ describe("Hash:axis_stop over packed cells", function()
           packed:remove(rec)
           plain:remove(twins[rec])
           table.remove(records, i)
+          if random(0, 60) == 0 then check_packs(packed) end
         elseif action == 2 then
           add()
+          if random(0, 60) == 0 then check_packs(packed) end
         elseif action == 4 then -- taken out of its world during a move: scans skip it
           local rec = records[random(1, #records)]
           rec.removed = not rec.removed or nil
@@ -135,6 +153,7 @@ describe("Hash:axis_stop over packed cells", function()
           twin[1], twin[2] = rec[1], rec[2]
           packed:insert(rec, rec[1], rec[2], rec[3], rec[4])
           plain:insert(twin, twin[1], twin[2], twin[3], twin[4])
+          if random(0, 60) == 0 then check_packs(packed) end
         else
           local p, q = new_probe(random, dyadic, records), sweep.new_probe()
           for k, v in pairs(p) do if type(v) ~= "table" then q[k] = v end end
@@ -159,10 +178,15 @@ describe("Hash:axis_stop over packed cells", function()
             if packed._big[1] then with_big = with_big + 1 end
           end
           if best then stopped = stopped + 1 end
+          if packed._gw == 2 ^ 26 and (p.pos > 2 ^ 16 or p.pos < -2 ^ 16 or p.cross > 2 ^ 16
+            or p.cross < -2 ^ 16) then
+            far_scans = far_scans + 1
+          end
           if p.touched > 1 then ties = ties + 1 end
         end
       end
       assert.is_true(check_packs(packed) > 0)
+      if packed._gw == 2 ^ 26 then sparse = sparse + 1 else dense = dense + 1 end
     end
     -- the cases are not vacuous: many stop, some on several records at once
     assert.is_true(compared > 6000, compared)
@@ -170,6 +194,9 @@ describe("Hash:axis_stop over packed cells", function()
     assert.is_true(ties > 50, ties)
     assert.is_true(packed_scans > compared / 2, packed_scans)
     assert.is_true(with_big > 500, with_big)
+    -- both layouts of the store, and scans among the far boxes
+    assert.is_true(sparse >= 8 and dense >= 30, sparse .. " " .. dense)
+    assert.is_true(far_scans > 30, far_scans)
   end)
 
   it("keeps a box's packed copy when Hash:moved moves it within its cells", function()

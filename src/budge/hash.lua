@@ -22,7 +22,7 @@
 local here = (...):match("^(.*)%.[^%.]+$")
 local sweep = require(here .. ".sweep")
 
-local floor, min = math.floor, math.min
+local floor, min, max = math.floor, math.min, math.max
 -- LuaJIT takes the branch-free forms of the scans (math.min compiles to no branch there);
 -- Lua 5.1-5.4 the ones with comparisons.
 local BRANCH_FREE = rawget(_G, "jit") ~= nil
@@ -79,8 +79,25 @@ hash.SENTINEL = SENTINEL
 ---sentinels (SENTINEL)
 ---@field package _n integer how many (#_all, kept as a field: `#` is a search on LuaJIT)
 ---@field package _big budge.HashRecord[] the records spanning more than BIG_CELLS cells
----@field package _packed boolean cells keep a packed copy of their records' boxes
----@field package _packs table<number, table> cell key -> the cell's pack (packed hashes)
+---@field package _packed boolean keeps a packed copy of its records' boxes (the store)
+---@field package _store any[] packed hashes: every cell's packed boxes, in one array
+---@field package _first table<integer, integer> a cell's slot -> where its first entry in
+---the store starts (its entries: see hash.new)
+---@field package _last table<integer, integer> slot -> where its last entry starts (an
+---empty cell: less than its first)
+---@field package _room table<integer, integer> slot -> where the store's room for the
+---cell ends (the next cell's room may start there)
+---@field package _top integer where the store's first unused room starts
+---@field package _waste integer values of the store in no cell's room (left by cells that
+---moved to more room): past half the store, it is compacted
+---@field package _gx0 integer the cells with a slot: columns _gx0.._gx1, rows _gy0.._gy1,
+---the slot of (cx, cy) (cy - _gy0) * _gw + (cx - _gx0) + 1 (see regrid)
+---@field package _gy0 integer
+---@field package _gx1 integer
+---@field package _gy1 integer
+---@field package _gw integer
+---@field package _cx integer[] the columns of the cells that exist, in the order they were made
+---@field package _cy integer[] their rows
 local Hash = {}
 Hash.__index = Hash
 
@@ -96,15 +113,23 @@ local BIG_CELLS = 4096
 -- Hash:axis_stop scans every record of a hash of at most this many instead of its cells.
 local SMALL = 8
 
----A new, empty hash. With `packed`, each cell keeps beside its records a packed copy of
----their boxes, as inserted, in one flat array (cell.pack: at [1] the index where its last
----entry starts, then x, y, right, bottom, oneway, record, six slots per record, in the
----cell's order), which Hash:axis_stop reads instead of the records: the world's solids
----(world.lua), whose boxes change only by a remove and an insert. The scan finds each
----pack by the cell's key in _packs, without the cell: a lookup, the cell's header, its
----hash node for `pack` and its array (for #cell) were four dependent reads where the pack
----alone is one (`luajit bench/world.lua --way boxes`, fresh runs interleaved with the
----tree before, 2026-12-03: figures in the CHANGELOG).
+---A new, empty hash. With `packed`, the hash keeps beside its cells a packed copy of
+---their records' boxes, as inserted, which Hash:axis_stop reads instead of the records:
+---the world's solids (world.lua), whose boxes change only by a remove and an insert. All
+---the cells' copies are in one flat array, the store: a cell's entries one after the
+---other, in the cell's order, six values each (an entry starting at b: b + 1 x, b + 2 y,
+---b + 3 right, b + 4 bottom, b + 5 oneway, b + 6 the record), from _first[slot] to
+---_last[slot], with room up to _room[slot]. A cell's slot is a number worked out from its
+---column and row: while the cells in use fill a good part of the rectangle around them,
+---an index into that rectangle (the three tables are arrays, read by index), otherwise
+---the cell's key (tables with a hash part: see regrid).
+---Speed: the scan reads, per cell, three numbers of small dense arrays and the cell's run
+---of the store, where a pack per cell found by its key in a table (the layout before)
+---read the key's hash node, the pack's header and its array, three places in memory at
+---random. `luajit bench/world.lua --way W --count N --frames 300`, 5 fresh runs each,
+---interleaved, 2026-12-03, medians in ns per move: box per tile 648 -> 544 at N = 1000,
+---729 -> 677 at 10000; merged boxes 617 -> 514 and 668 -> 580. With the store but the
+---slot looked up by key: 597, 699, 571 and 628.
 ---Speed: the scan reads one array per cell, where each record is a table of its own
 ---with a hash part (an actor's 405 bytes on LuaJIT, 530 on Lua 5.4, 850 on both before
 ---its box, kind, mark and cells moved to the array part: a world bench scene of 8000
@@ -115,8 +140,9 @@ local SMALL = 8
 ---@return budge.Hash
 function hash.new(cell_size, packed)
   return setmetatable({cell_size = cell_size, _cells = {}, _stamp = 0,
-    _all = {SENTINEL, SENTINEL}, _n = 0, _big = {}, _packed = packed == true, _packs = {}},
-    Hash)
+    _all = {SENTINEL, SENTINEL}, _n = 0, _big = {}, _packed = packed == true,
+    _store = {}, _first = {}, _last = {}, _room = {}, _top = 0, _waste = 0,
+    _gx0 = 0, _gy0 = 0, _gx1 = -1, _gy1 = -1, _gw = 0, _cx = {}, _cy = {}}, Hash)
 end
 
 ---A fresh stamp for one scan: records visited in that scan carry it.
@@ -149,6 +175,90 @@ function Hash:cell_count(x, y, width, height)
   return (cx1 - cx0 + 1) * (cy1 - cy0 + 1)
 end
 
+-- The store (packed hashes) --------------------------------------------------------
+
+-- A rectangle of slots holds at most this many cells more than 8 per cell in use: past
+-- that, slots are the cells' keys (the store's three tables then have a hash part).
+local DENSE_CELLS = 4096
+-- The rectangle of cells whose slot is their key: any cell the world's range allows
+-- (with these, (cy - SPARSE_Y0) * KEY_STRIDE + (cx - SPARSE_X0) + 1 is the key).
+local SPARSE_X0, SPARSE_Y0, SPARSE_END = 1 - 2 ^ 25, -2 ^ 25, 2 ^ 25 - 1
+
+-- Lays the store out again with slots for the cells (cx0..cx1, cy0..cy1) as well as for
+-- those that exist: the cells in the order they were made, each with room for its
+-- entries and no more (so it compacts the store too). While the cells in use fill a good
+-- part of the rectangle around them (at most DENSE_CELLS + 8 per cell), a cell's slot is
+-- its index in that rectangle (grown by a quarter on each side that grows, so that a map
+-- added tile by tile lays out a few times, not once per row), else its key, for good.
+local function regrid(self, cx0, cy0, cx1, cy1)
+  local gx0, gy0, gw = self._gx0, self._gy0, self._gw
+  local nx0, ny0, nx1, ny1, nw = SPARSE_X0, SPARSE_Y0, SPARSE_END, SPARSE_END, KEY_STRIDE
+  local xs, ys = self._cx, self._cy
+  local n = #xs
+  if gw ~= KEY_STRIDE then
+    if self._gx1 < gx0 then -- (no cell yet)
+      nx0, ny0, nx1, ny1 = cx0, cy0, cx1, cy1
+    else
+      nx0, ny0 = min(gx0, cx0), min(self._gy0, cy0)
+      nx1, ny1 = max(self._gx1, cx1), max(self._gy1, cy1)
+      local grow_x, grow_y = floor((nx1 - nx0) / 4) + 1, floor((ny1 - ny0) / 4) + 1
+      if nx0 < gx0 then nx0 = nx0 - grow_x end
+      if nx1 > self._gx1 then nx1 = nx1 + grow_x end
+      if ny0 < gy0 then ny0 = ny0 - grow_y end
+      if ny1 > self._gy1 then ny1 = ny1 + grow_y end
+    end
+    nw = nx1 - nx0 + 1
+    if nw * (ny1 - ny0 + 1) > DENSE_CELLS + 8 * (n + (cx1 - cx0 + 1) * (cy1 - cy0 + 1)) then
+      nx0, ny0, nx1, ny1, nw = SPARSE_X0, SPARSE_Y0, SPARSE_END, SPARSE_END, KEY_STRIDE
+    end
+  end
+  local old_store, old_first, old_last = self._store, self._first, self._last
+  local store, first, last, room = {}, {}, {}, {}
+  if nw ~= KEY_STRIDE then
+    for slot = 1, nw * (ny1 - ny0 + 1) do first[slot], last[slot], room[slot] = 0, -6, 0 end
+  end
+  local top = 0
+  for i = 1, n do
+    local cx, cy = xs[i], ys[i]
+    local from, to = (cy - gy0) * gw + (cx - gx0) + 1, (cy - ny0) * nw + (cx - nx0) + 1
+    local b, e = old_first[from], old_last[from]
+    for j = 1, e + 6 - b do store[top + j] = old_store[b + j] end
+    first[to], last[to] = top, top + e - b
+    top = top + e + 6 - b
+    room[to] = top
+  end
+  self._store, self._first, self._last, self._room = store, first, last, room
+  self._top, self._waste = top, 0
+  self._gx0, self._gy0, self._gx1, self._gy1, self._gw = nx0, ny0, nx1, ny1, nw
+end
+
+-- Appends an entry to the cell at `slot`; a cell with no room left moves to the top of
+-- the store with room for twice its entries (its old room is waste until a compaction).
+local function pack_add(self, slot, x, y, right, bottom, oneway, record)
+  local store, last = self._store, self._last
+  local base = last[slot] + 6
+  if base >= self._room[slot] then
+    local first, top = self._first[slot], self._top
+    local used = base - first
+    for j = 1, used do store[top + j], store[first + j] = store[first + j], nil end
+    self._waste = self._waste + self._room[slot] - first
+    local room = top + max(used * 2, 24)
+    self._first[slot], self._room[slot], self._top = top, room, room
+    base = top + used
+  end
+  store[base + 1], store[base + 2], store[base + 3] = x, y, right
+  store[base + 4], store[base + 5], store[base + 6] = bottom, oneway, record
+  last[slot] = base
+end
+
+-- Takes the `index`th entry out of the cell at `slot`, keeping the others' order.
+local function pack_remove(self, slot, index)
+  local store, e = self._store, self._last[slot]
+  for j = self._first[slot] + (index - 1) * 6 + 1, e do store[j] = store[j + 6] end
+  for j = e + 1, e + 6 do store[j] = nil end
+  self._last[slot] = e - 6
+end
+
 ---Registers `record` in every cell the rectangle touches, edges included.
 ---@param record budge.HashRecord
 ---@param x number
@@ -175,29 +285,33 @@ function Hash:insert(record, x, y, width, height)
   -- times instead of 4; make bench-jit's platformer 738 KB instead of 798 (medians of 5,
   -- 2026-12-01).
   local cells, packed = self._cells, self._packed
+  if packed and (cx0 < self._gx0 or cy0 < self._gy0 or cx1 > self._gx1 or cy1 > self._gy1
+    or self._waste > self._top / 2 + 96) then
+    regrid(self, cx0, cy0, cx1, cy1)
+  end
+  local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local columns = cx1 - cx0 + 1
   local right, bottom, oneway = x + width, y + height, record.oneway == true
   for k = 0, columns * (cy1 - cy0 + 1) - 1 do
     local row = floor(k / columns)
-    local key = (cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET
+    local cx, cy = cx0 + (k - row * columns), cy0 + row
+    local key = cx + cy * KEY_STRIDE + KEY_OFFSET
     local cell = cells[key]
     if cell == nil then
-      if packed then
-        local pack = {-5} -- (its [1]: where its last entry starts; none yet)
-        cell = {pack = pack}
-        self._packs[key] = pack
-      else
-        cell = {}
-      end
+      cell = {}
       cells[key] = cell
+      if packed then
+        local made = #self._cx + 1
+        self._cx[made], self._cy[made] = cx, cy
+        if gw == KEY_STRIDE then -- (a rectangle's slots start empty; a key's is made here)
+          local top = self._top
+          self._first[key], self._last[key], self._room[key] = top, top - 6, top
+        end
+      end
     end
-    local count = #cell + 1
-    cell[count] = record
+    cell[#cell + 1] = record
     if packed then
-      local pack, base = cell.pack, count * 6 - 5
-      pack[base + 1], pack[base + 2], pack[base + 3] = x, y, right
-      pack[base + 4], pack[base + 5], pack[base + 6] = bottom, oneway, record
-      pack[1] = base
+      pack_add(self, (cy - gy0) * gw + (cx - gx0) + 1, x, y, right, bottom, oneway, record)
     end
   end
 end
@@ -210,21 +324,15 @@ local function unlist(list, record, field, count)
   record[field] = nil
 end
 
--- Takes `record` out of one cell, keeping the others' insertion order (shift, don't swap),
--- and out of the cell's packed boxes when it has them.
+-- Takes `record` out of one cell, keeping the others' insertion order (shift, don't
+-- swap); returns where it was in the cell.
 local function unlist_cell(cell, record)
   local count = #cell
   for i = 1, count do
     if cell[i] == record then
       for j = i, count - 1 do cell[j] = cell[j + 1] end
       cell[count] = nil
-      local pack = cell.pack
-      if pack then
-        for j = i * 6 - 4, count * 6 - 5 do pack[j] = pack[j + 6] end
-        for j = count * 6 - 4, count * 6 + 1 do pack[j] = nil end
-        pack[1] = count * 6 - 11
-      end
-      return
+      return i
     end
   end
 end
@@ -237,13 +345,15 @@ function Hash:remove(record)
   all[n], all[n + 2] = SENTINEL, nil -- (the two sentinels move down one)
   self._n = n - 1
   if record._big_slot then unlist(self._big, record, "_big_slot", #self._big) return end
-  local cells = self._cells
+  local cells, packed = self._cells, self._packed
+  local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local cx0, cy0 = record[8], record[9]
   local columns = record[10] - cx0 + 1
   for k = 0, columns * (record[11] - cy0 + 1) - 1 do -- (one flat loop: see insert)
     local row = floor(k / columns)
-    unlist_cell(cells[(cx0 + (k - row * columns)) + (cy0 + row) * KEY_STRIDE + KEY_OFFSET],
-      record)
+    local cx, cy = cx0 + (k - row * columns), cy0 + row
+    local index = unlist_cell(cells[cx + cy * KEY_STRIDE + KEY_OFFSET], record)
+    if packed then pack_remove(self, (cy - gy0) * gw + (cx - gx0) + 1, index) end
   end
 end
 
@@ -597,23 +707,26 @@ end
 -- reaching the loop then aborted ("inner loop in root trace"), and the functions of the
 -- move were blacklisted one after the other. With the break: 0 in 10.
 local TINY = 2 ^ -1022
-local function scan_packs(packs, probe, cx0, cy0, columns, count)
-  local k, pack, base, last, cx, cy = -1, nil, 1, -5, 0, 0
+local function scan_packs(self, probe, cx0, cy0, columns, count)
+  local store, firsts, lasts = self._store, self._first, self._last
+  local gx0, gy0, gw = self._gx0, self._gy0, self._gw
+  local k, base, last, cx, cy = -1, 1, -5, 0, 0
   while true do
     if base > last then -- the next cell
       k = k + 1
       if not (k < count) then break end -- luacheck: ignore (not >=: a NaN count ends it too)
       local row = floor(k / columns)
       cx, cy = cx0 + (k - row * columns), cy0 + row
-      local found = packs[cx + cy * KEY_STRIDE + KEY_OFFSET] -- (the key insert uses)
-      if found then pack, base, last = found, 1, found[1] end
+      local slot = (cy - gy0) * gw + (cx - gx0) + 1 -- (the slot insert uses)
+      local first = firsts[slot]
+      if first then base, last = first, lasts[slot] end
     else
-      local face = pack[base + probe.face_slot]
+      local face = store[base + probe.face_slot]
       local signed = probe.sign * face
       if min(min(probe.signed_reach - signed, signed - probe.signed_pos) + TINY,
-        probe.cross_end - pack[base + probe.cross_slot],
-        pack[base + probe.cross_slot + 2] - probe.cross) > 0 then
-        consider_packed(probe, pack, base, face, cx, cy)
+        probe.cross_end - store[base + probe.cross_slot],
+        store[base + probe.cross_slot + 2] - probe.cross) > 0 then
+        consider_packed(probe, store, base, face, cx, cy)
       end
       base = base + 6
     end
@@ -627,7 +740,9 @@ end
 -- --count 1000 --frames 60`, 5 fresh runs each, interleaved, 2026-12-02: 3784 ns per move
 -- with the records' scan (scan_cell: unpacked, as Lua 5.x had it), 3470 with this; merged
 -- boxes 3453 -> 3301.
-local function scan_packs_compared(packs, probe, cx0, cy0, columns, count)
+local function scan_packs_compared(self, probe, cx0, cy0, columns, count)
+  local store, firsts, lasts = self._store, self._first, self._last
+  local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local face_slot, cross_slot = probe.face_slot, probe.cross_slot
   local cross, cross_end = probe.cross, probe.cross_end
   local low, high = probe.pos, probe.reach -- (forward; back, from the reach to the edge)
@@ -635,13 +750,14 @@ local function scan_packs_compared(packs, probe, cx0, cy0, columns, count)
   for k = 0, count - 1 do
     local row = floor(k / columns)
     local cx, cy = cx0 + (k - row * columns), cy0 + row
-    local pack = packs[cx + cy * KEY_STRIDE + KEY_OFFSET]
-    if pack then
-      for base = 1, pack[1], 6 do
-        local face = pack[base + face_slot]
-        if face >= low and face <= high and pack[base + cross_slot] < cross_end
-          and pack[base + cross_slot + 2] > cross then
-          consider_packed(probe, pack, base, face, cx, cy)
+    local slot = (cy - gy0) * gw + (cx - gx0) + 1
+    local first = firsts[slot]
+    if first then
+      for base = first, lasts[slot], 6 do
+        local face = store[base + face_slot]
+        if face >= low and face <= high and store[base + cross_slot] < cross_end
+          and store[base + cross_slot + 2] > cross then
+          consider_packed(probe, store, base, face, cx, cy)
         end
       end
     end
@@ -678,6 +794,20 @@ function Hash:axis_stop(x0, y0, x1, y1, probe)
     return
   end
   if self._packed then
+    -- only the cells with a slot can hold anything (see regrid)
+    if BRANCH_FREE then
+      cx0, cy0, cx1, cy1 = max(cx0, self._gx0), max(cy0, self._gy0), min(cx1, self._gx1),
+        min(cy1, self._gy1)
+      columns = cx1 - cx0 + 1
+      count = max(columns, 0) * max(cy1 - cy0 + 1, 0)
+    else
+      if cx0 < self._gx0 then cx0 = self._gx0 end
+      if cy0 < self._gy0 then cy0 = self._gy0 end
+      if cx1 > self._gx1 then cx1 = self._gx1 end
+      if cy1 > self._gy1 then cy1 = self._gy1 end
+      columns = cx1 - cx0 + 1
+      count = (columns > 0 and cy1 >= cy0) and columns * (cy1 - cy0 + 1) or 0
+    end
     local forward = probe.forward
     if probe.is_x then probe.face_slot, probe.cross_slot = forward and 1 or 3, 2
     else probe.face_slot, probe.cross_slot = forward and 2 or 4, 1 end
@@ -686,9 +816,9 @@ function Hash:axis_stop(x0, y0, x1, y1, probe)
       local sign = forward and 1 or -1
       probe.sign, probe.signed_reach = sign, sign * probe.reach
       probe.signed_pos = forward and probe.pos or -probe.edge
-      scan_packs(self._packs, probe, cx0, cy0, columns, count)
+      scan_packs(self, probe, cx0, cy0, columns, count)
     else
-      scan_packs_compared(self._packs, probe, cx0, cy0, columns, count)
+      scan_packs_compared(self, probe, cx0, cy0, columns, count)
     end
   else -- (one flat loop over the cells, as in collect; the key is the one insert uses)
     for k = 0, count - 1 do
