@@ -232,17 +232,27 @@ local function regrid(self, cx0, cy0, cx1, cy1)
   self._gx0, self._gy0, self._gx1, self._gy1, self._gw = nx0, ny0, nx1, ny1, nw
 end
 
--- Appends an entry to the cell at `slot`; a cell with no room left moves to the top of
+-- Appends an entry to the cell (cx, cy); a cell with no room left moves to the top of
 -- the store with room for twice its entries (its old room is waste until a compaction).
-local function pack_add(self, slot, x, y, right, bottom, oneway, record)
+-- Every value of the store up to its top is set (false where no entry is): the array
+-- stays one run of memory, and a trace's writes into it never leave its array part (with
+-- nil there, the platformer of `luajit bench/jit.lua` aborted 242 side traces a run at
+-- the writes below, "register coalescing too complex").
+-- (LuaJIT shaping: the slot is worked out here from the hash's fields, not from locals of
+-- the caller's loop: with three more values live across insert's loop, its traces
+-- aborted, "register coalescing too complex", 242 times a run of `luajit bench/jit.lua`'s
+-- platformer.)
+local function pack_add(self, cx, cy, x, y, right, bottom, oneway, record)
+  local slot = (cy - self._gy0) * self._gw + (cx - self._gx0) + 1
   local store, last = self._store, self._last
   local base = last[slot] + 6
   if base >= self._room[slot] then
     local first, top = self._first[slot], self._top
     local used = base - first
-    for j = 1, used do store[top + j], store[first + j] = store[first + j], nil end
-    self._waste = self._waste + self._room[slot] - first
     local room = top + max(used * 2, 24)
+    for j = 1, used do store[top + j], store[first + j] = store[first + j], false end
+    for j = top + used + 1, room do store[j] = false end
+    self._waste = self._waste + self._room[slot] - first
     self._first[slot], self._room[slot], self._top = top, room, room
     base = top + used
   end
@@ -251,11 +261,12 @@ local function pack_add(self, slot, x, y, right, bottom, oneway, record)
   last[slot] = base
 end
 
--- Takes the `index`th entry out of the cell at `slot`, keeping the others' order.
-local function pack_remove(self, slot, index)
+-- Takes the `index`th entry out of the cell (cx, cy), keeping the others' order.
+local function pack_remove(self, cx, cy, index)
+  local slot = (cy - self._gy0) * self._gw + (cx - self._gx0) + 1
   local store, e = self._store, self._last[slot]
   for j = self._first[slot] + (index - 1) * 6 + 1, e do store[j] = store[j + 6] end
-  for j = e + 1, e + 6 do store[j] = nil end
+  for j = e + 1, e + 6 do store[j] = false end
   self._last[slot] = e - 6
 end
 
@@ -289,7 +300,6 @@ function Hash:insert(record, x, y, width, height)
     or self._waste > self._top / 2 + 96) then
     regrid(self, cx0, cy0, cx1, cy1)
   end
-  local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local columns = cx1 - cx0 + 1
   local right, bottom, oneway = x + width, y + height, record.oneway == true
   for k = 0, columns * (cy1 - cy0 + 1) - 1 do
@@ -303,7 +313,7 @@ function Hash:insert(record, x, y, width, height)
       if packed then
         local made = #self._cx + 1
         self._cx[made], self._cy[made] = cx, cy
-        if gw == KEY_STRIDE then -- (a rectangle's slots start empty; a key's is made here)
+        if self._gw == KEY_STRIDE then -- (a rectangle's slots start empty; a key's is made here)
           local top = self._top
           self._first[key], self._last[key], self._room[key] = top, top - 6, top
         end
@@ -311,7 +321,7 @@ function Hash:insert(record, x, y, width, height)
     end
     cell[#cell + 1] = record
     if packed then
-      pack_add(self, (cy - gy0) * gw + (cx - gx0) + 1, x, y, right, bottom, oneway, record)
+      pack_add(self, cx, cy, x, y, right, bottom, oneway, record)
     end
   end
 end
@@ -346,14 +356,13 @@ function Hash:remove(record)
   self._n = n - 1
   if record._big_slot then unlist(self._big, record, "_big_slot", #self._big) return end
   local cells, packed = self._cells, self._packed
-  local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local cx0, cy0 = record[8], record[9]
   local columns = record[10] - cx0 + 1
   for k = 0, columns * (record[11] - cy0 + 1) - 1 do -- (one flat loop: see insert)
     local row = floor(k / columns)
     local cx, cy = cx0 + (k - row * columns), cy0 + row
     local index = unlist_cell(cells[cx + cy * KEY_STRIDE + KEY_OFFSET], record)
-    if packed then pack_remove(self, (cy - gy0) * gw + (cx - gx0) + 1, index) end
+    if packed then pack_remove(self, cx, cy, index) end
   end
 end
 
