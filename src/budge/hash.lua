@@ -5,13 +5,14 @@
 -- y, exactly once each, and its [8] to [11] name that range (cx0, cy0, cx1, cy1). Inside
 -- a cell records keep insertion order. Scans visit each record once by stamping it with
 -- a number from the hash's own counter, so two hashes (two worlds) never disturb each
--- other. The axis scan of a packed hash (the world's solids: see hash.new) reads each
--- cell's packed copy of its records' boxes instead and stamps nothing: a record met in
--- two cells is added to the probe's touch list once, checked on a tie.
+-- other. The axis scan of a packed hash (the world's solids: see hash.new) reads the
+-- cells' packed copies of their records' boxes (the store) instead and stamps nothing: a
+-- record met in two cells is added to the probe's touch list once, checked on a tie.
 --
 -- The hash stores what it is given: it reads and writes only the fields declared in
--- budge.HashRecord. Cells are never freed: a world whose boxes stay in one area stops
--- allocating once every cell it uses exists. Nothing here iterates with pairs().
+-- budge.HashRecord. Cells are never freed, nor their room in the store: a world whose
+-- boxes stay in one area stops allocating once every cell it uses exists (and has room
+-- for the most boxes it has held at once). Nothing here iterates with pairs().
 --
 -- Bounded work: a record spanning more than BIG_CELLS (4096) cells is kept in a list of big
 -- records instead of its cells, and a scan of a rectangle touching more cells than the
