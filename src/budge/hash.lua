@@ -239,10 +239,6 @@ end
 -- stays one run of memory, and a trace's writes into it never leave its array part (with
 -- nil there, the platformer of `luajit bench/jit.lua` aborted 242 side traces a run at
 -- the writes below, "register coalescing too complex").
--- (LuaJIT shaping: the slot is worked out here from the hash's fields, not from locals of
--- the caller's loop: with three more values live across insert's loop, its traces
--- aborted, "register coalescing too complex", 242 times a run of `luajit bench/jit.lua`'s
--- platformer.)
 local function pack_add(self, cx, cy, x, y, right, bottom, oneway, record)
   local slot = (cy - self._gy0) * self._gw + (cx - self._gx0) + 1
   local store, last = self._store, self._last
