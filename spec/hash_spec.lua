@@ -199,6 +199,42 @@ describe("Hash:axis_stop over packed cells", function()
     assert.is_true(far_scans > 30, far_scans)
   end)
 
+  it("scans no cell for a NaN rectangle, on every interpreter", function()
+    local packed = hash.new(64, true)
+    for i = 1, 20 do
+      local rec = {i * 30, 0, 10, 10}
+      packed:insert(rec, rec[1], rec[2], rec[3], rec[4])
+    end
+    local p = sweep.new_probe()
+    p.is_x, p.forward, p.delta, p.pos, p.size, p.edge = true, true, 590, 0, 2, 2
+    p.reach, p.cross, p.cross_end, p.blocks_oneway = 592, 4, 8, false
+    p.best, p.touched = nil, 0
+    packed:axis_stop(0 / 0, 4, 600, 8, p)
+    assert.is_nil(p.best)
+    packed:axis_stop(0, 4, 600, 8, p) -- (the same probe over a real rectangle stops)
+    assert.are.equal(28, p.best)
+  end)
+
+  it("keeps the store's size bounded while a box goes back and forth across cells", function()
+    local packed = hash.new(16, true)
+    for i = 0, 40 do -- a floor, in the cells the box crosses
+      local rec = {i * 16, 64, 16, 16}
+      packed:insert(rec, rec[1], rec[2], rec[3], rec[4])
+    end
+    local box = {0, 50, 30, 14}
+    packed:insert(box, box[1], box[2], box[3], box[4])
+    local sizes = {}
+    for step = 1, 20000 do
+      local phase = step % 1200
+      box[1] = phase < 600 and phase or 1200 - phase
+      packed:moved(box, box[1], box[2], box[3], box[4])
+      if step % 2000 == 0 then sizes[#sizes + 1] = #packed._store end
+    end
+    for i = 2, #sizes do assert.are.equal(sizes[1], sizes[i]) end
+    assert.is_true(sizes[1] < 4 * 6 * (41 * 2 + 3 * 2) + 6 * 24 * 40, sizes[1])
+    check_packs(packed)
+  end)
+
   it("keeps a box's packed copy when Hash:moved moves it within its cells", function()
     local packed = hash.new(64, true)
     local rec = {10, 0, 4, 4}

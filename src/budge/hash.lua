@@ -89,8 +89,6 @@ hash.SENTINEL = SENTINEL
 ---@field package _room table<integer, integer> slot -> where the store's room for the
 ---cell ends (the next cell's room may start there)
 ---@field package _top integer where the store's first unused room starts
----@field package _waste integer values of the store in no cell's room (left by cells that
----moved to more room): past half the store, it is compacted
 ---@field package _gx0 integer the cells with a slot: columns _gx0.._gx1, rows _gy0.._gy1,
 ---the slot of (cx, cy) (cy - _gy0) * _gw + (cx - _gx0) + 1 (see regrid)
 ---@field package _gy0 integer
@@ -142,7 +140,7 @@ local SMALL = 8
 function hash.new(cell_size, packed)
   return setmetatable({cell_size = cell_size, _cells = {}, _stamp = 0,
     _all = {SENTINEL, SENTINEL}, _n = 0, _big = {}, _packed = packed == true,
-    _store = {}, _first = {}, _last = {}, _room = {}, _top = 0, _waste = 0,
+    _store = {}, _first = {}, _last = {}, _room = {}, _top = 0,
     _gx0 = 0, _gy0 = 0, _gx1 = -1, _gy1 = -1, _gw = 0, _cx = {}, _cy = {}}, Hash)
 end
 
@@ -229,12 +227,16 @@ local function regrid(self, cx0, cy0, cx1, cy1)
     room[to] = top
   end
   self._store, self._first, self._last, self._room = store, first, last, room
-  self._top, self._waste = top, 0
+  self._top = top
   self._gx0, self._gy0, self._gx1, self._gy1, self._gw = nx0, ny0, nx1, ny1, nw
 end
 
 -- Appends an entry to the cell (cx, cy); a cell with no room left moves to the top of
--- the store with room for twice its entries (its old room is waste until a compaction).
+-- the store with room for twice its entries. Its old room is left behind until the next
+-- lay-out (regrid: a box outside the slots' rectangle): the rooms left behind add up to
+-- less than the rooms in use, so the store holds less than four times the most entries
+-- each cell has held at once (a cell's room: four entries at least). (Not laid out again for them alone: a cell that keeps
+-- growing would be compacted, then moved again at its next entry.)
 -- Every value of the store up to its top is set (false where no entry is): the array
 -- stays one run of memory, and a trace's writes into it never leave its array part (with
 -- nil there, the platformer of `luajit bench/jit.lua` aborted 242 side traces a run at
@@ -249,7 +251,6 @@ local function pack_add(self, cx, cy, x, y, right, bottom, oneway, record)
     local room = top + max(used * 2, 24)
     for j = 1, used do store[top + j], store[first + j] = store[first + j], false end
     for j = top + used + 1, room do store[j] = false end
-    self._waste = self._waste + self._room[slot] - first
     self._first[slot], self._room[slot], self._top = top, room, room
     base = top + used
   end
@@ -293,8 +294,7 @@ function Hash:insert(record, x, y, width, height)
   -- times instead of 4; make bench-jit's platformer 738 KB instead of 798 (medians of 5,
   -- 2026-12-01).
   local cells, packed = self._cells, self._packed
-  if packed and (cx0 < self._gx0 or cy0 < self._gy0 or cx1 > self._gx1 or cy1 > self._gy1
-    or self._waste > self._top / 2 + 96) then
+  if packed and (cx0 < self._gx0 or cy0 < self._gy0 or cx1 > self._gx1 or cy1 > self._gy1) then
     regrid(self, cx0, cy0, cx1, cy1)
   end
   local columns = cx1 - cx0 + 1
@@ -800,20 +800,14 @@ function Hash:axis_stop(x0, y0, x1, y1, probe)
     return
   end
   if self._packed then
-    -- only the cells with a slot can hold anything (see regrid)
-    if BRANCH_FREE then
-      cx0, cy0, cx1, cy1 = max(cx0, self._gx0), max(cy0, self._gy0), min(cx1, self._gx1),
-        min(cy1, self._gy1)
-      columns = cx1 - cx0 + 1
-      count = max(columns, 0) * max(cy1 - cy0 + 1, 0)
-    else
-      if cx0 < self._gx0 then cx0 = self._gx0 end
-      if cy0 < self._gy0 then cy0 = self._gy0 end
-      if cx1 > self._gx1 then cx1 = self._gx1 end
-      if cy1 > self._gy1 then cy1 = self._gy1 end
-      columns = cx1 - cx0 + 1
-      count = (columns > 0 and cy1 >= cy0) and columns * (cy1 - cy0 + 1) or 0
-    end
+    -- only the cells with a slot can hold anything (see regrid). Comparisons on every
+    -- interpreter: a NaN side leaves no cell to scan (LuaJIT's math.max(NaN, a) is a).
+    if cx0 < self._gx0 then cx0 = self._gx0 end
+    if cy0 < self._gy0 then cy0 = self._gy0 end
+    if cx1 > self._gx1 then cx1 = self._gx1 end
+    if cy1 > self._gy1 then cy1 = self._gy1 end
+    columns = cx1 - cx0 + 1
+    count = (columns > 0 and cy1 >= cy0) and columns * (cy1 - cy0 + 1) or 0
     local forward = probe.forward
     if probe.is_x then probe.face_slot, probe.cross_slot = forward and 1 or 3, 2
     else probe.face_slot, probe.cross_slot = forward and 2 or 4, 1 end
