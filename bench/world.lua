@@ -21,8 +21,9 @@
 -- another's figures, and a bare loop compiles two ways from run to run), the ways
 -- interleaved; the medians of the runs are printed, with the ratios to the reference's
 -- median. bump.lua runs at most 300000 moves a run (fewer frames at 10000 actors: it is
--- slow), the others F frames. KB per frame are allocated with the GC stopped, after a
--- warm-up. The budge ways that move as the reference does (tiles, boxes, merged) must end
+-- slow), the others F frames and at least 60000 moves (more frames at 100 actors). KB per
+-- frame are allocated with the GC stopped, after a warm-up of 20 frames and at least
+-- 50000 moves. The budge ways that move as the reference does (tiles, boxes, merged) must end
 -- every actor where it does: the processes print a checksum of the final positions.
 -- --readme FILE writes the table into FILE between the markers for this interpreter.
 if ... ~= "bench.world" then -- run as a program; bench/run.lua requires it as a module
@@ -173,11 +174,18 @@ local function setup(way, grid, starts, method)
   return actors, step
 end
 
--- One timed run: warm-up frames, then `frames` frames with the GC stopped.
+-- One timed run: warm-up frames (20, and at least WARM_MOVES moves), then `frames` frames
+-- with the GC stopped. The warm-up counts moves, not only frames: with 20 frames (2000
+-- moves at 100 actors) LuaJIT was still compiling in the timed frames (0.2 KB a frame
+-- of its own), and 100 actors' tile moves measured 106-181 ns, the reference 80-358;
+-- after 50000 moves, 101-103 and 34-65, as with ten times the frames (`luajit
+-- bench/world.lua --way W --count 100`, 3 runs each, 2026-12-03).
+local WARM_MOVES = 50000
 local function run(way, grid, starts, frames, method)
   local actors, step = setup(way, grid, starts, method)
+  local warm_frames = math.max(20, math.ceil(WARM_MOVES / #actors))
   local bytes, elapsed = garbage.measure(step, frames,
-    {warm = function() for _ = 1, 20 do step() end end})
+    {warm = function() for _ = 1, warm_frames do step() end end})
   collectgarbage("collect")
   return elapsed * 1e9 / (frames * #actors), bytes / 1024 / frames, actors
 end
@@ -195,10 +203,14 @@ if options.profile ~= "" then -- one way alone, for luajit -jp
   return
 end
 
--- How many frames a way runs with `count` actors.
+-- How many frames a way runs with `count` actors: --frames, and for budge's ways and the
+-- reference at least MIN_MOVES moves (a timed run of a few milliseconds measures the
+-- machine more than the moves: Lua 5.4's 100 actors' tile moves took 2195-2367 ns a move
+-- over 60 frames and 1473-1510 over 600, the same instructions per move, 2026-12-03).
+local MIN_MOVES = 60000
 local function frames_for(way, count)
   if way == "bump" then return math.min(options.frames, math.ceil(300000 / count)) end
-  return options.frames
+  return math.max(options.frames, math.ceil(MIN_MOVES / count))
 end
 
 if options.way ~= "" then -- one run of one way in this process: ns, KB per frame, checksum
@@ -228,7 +240,8 @@ end
 local date = os.date("!%Y-%m-%d")
 say(("`%s bench/world.lua --frames %d --runs %d`, %s, on %s, %s: ns per actor per frame, "
   .. "median of %d fresh processes (the ways interleaved); ratio to the reference's median "
-  .. "in brackets%s."):format(interpreter, options.frames, options.runs, date,
+  .. "in brackets; each run at least 60000 moves after a warm-up of 50000%s."):format(
+  interpreter, options.frames, options.runs, date,
   common.interpreter(), common.machine(), options.runs,
   has_bump and "; bump.lua at most 300000 moves a run" or "; bump.lua not found, skipped"))
 say("")
