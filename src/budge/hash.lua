@@ -235,8 +235,9 @@ end
 -- the store with room for twice its entries. Its old room is left behind until the next
 -- lay-out (regrid: a box outside the slots' rectangle): the rooms left behind add up to
 -- less than the rooms in use, so the store holds less than four times the most entries
--- each cell has held at once (a cell's room: four entries at least). (Not laid out again for them alone: a cell that keeps
--- growing would be compacted, then moved again at its next entry.)
+-- each cell has held at once (a cell's room: four entries at least). (Not laid out
+-- again for them alone: a cell that keeps growing would be compacted, then moved again at
+-- its next entry.)
 -- Every value of the store up to its top is set (false where no entry is): the array
 -- stays one run of memory, and a trace's writes into it never leave its array part (with
 -- nil there, the platformer of `luajit bench/jit.lua` aborted 242 side traces a run at
