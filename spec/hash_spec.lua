@@ -66,6 +66,26 @@ local function swept(p)
   return p.cross, low, p.cross_end - p.cross, length
 end
 
+-- A probe moving forward by `delta` from `pos` (box of `size`) on the axis (is_x), across
+-- from `cross` to `cross_end`, nothing met yet.
+local function forward_probe(is_x, pos, size, delta, cross, cross_end)
+  local p = sweep.new_probe()
+  p.is_x, p.forward, p.delta, p.pos, p.size, p.edge = is_x, true, delta, pos, size, pos + size
+  p.reach, p.cross, p.cross_end, p.blocks_oneway = pos + size + delta, cross, cross_end, not is_x
+  p.best, p.touched = nil, 0
+  return p
+end
+
+-- A packed hash of cell_size holding `count` boxes, the ith at box(i) (x, y, width, height).
+local function packed_hash(cell_size, count, box)
+  local packed = hash.new(cell_size, true)
+  for i = 1, count do
+    local rec = {box(i)}
+    packed:insert(rec, rec[1], rec[2], rec[3], rec[4])
+  end
+  return packed
+end
+
 -- Every cell's run of the store holds its records' boxes, in the cell's order, inside its
 -- room, and no two cells' rooms overlap.
 local function check_packs(h)
@@ -200,15 +220,8 @@ describe("Hash:axis_stop over packed cells", function()
   end)
 
   it("scans no cell for a NaN rectangle, on every interpreter", function()
-    local packed = hash.new(64, true)
-    for i = 1, 20 do
-      local rec = {i * 30, 0, 10, 10}
-      packed:insert(rec, rec[1], rec[2], rec[3], rec[4])
-    end
-    local p = sweep.new_probe()
-    p.is_x, p.forward, p.delta, p.pos, p.size, p.edge = true, true, 590, 0, 2, 2
-    p.reach, p.cross, p.cross_end, p.blocks_oneway = 592, 4, 8, false
-    p.best, p.touched = nil, 0
+    local packed = packed_hash(64, 20, function(i) return i * 30, 0, 10, 10 end)
+    local p = forward_probe(true, 0, 2, 590, 4, 8)
     packed:axis_stop(0 / 0, 4, 600, 8, p)
     assert.is_nil(p.best)
     packed:axis_stop(0, 4, 600, 8, p) -- (the same probe over a real rectangle stops)
@@ -245,10 +258,7 @@ describe("Hash:axis_stop over packed cells", function()
     end
     rec[1] = 20
     packed:moved(rec, rec[1], rec[2], rec[3], rec[4])
-    local p = sweep.new_probe()
-    p.is_x, p.forward, p.delta, p.pos, p.size, p.edge = true, true, 30, 0, 2, 2
-    p.reach, p.cross, p.cross_end, p.blocks_oneway = 32, 0, 2, false
-    p.best, p.touched = nil, 0
+    local p = forward_probe(true, 0, 2, 30, 0, 2)
     packed:axis_stop(0, 0, 32, 2, p)
     assert.are.equal(18, p.best) -- against x = 20, not 10
     assert.are.equal(rec, p.touch[1])
@@ -257,15 +267,8 @@ describe("Hash:axis_stop over packed cells", function()
 
   it("adds a box met in several scanned cells once, at a cost that stays linear", function()
     -- 3000 boxes side by side, each in two rows of cells, all met at the same top face
-    local packed = hash.new(16, true)
-    for i = 0, 2999 do
-      local rec = {i * 4, 12, 2, 8}
-      packed:insert(rec, rec[1], rec[2], rec[3], rec[4])
-    end
-    local p = sweep.new_probe()
-    p.is_x, p.forward, p.delta, p.pos, p.size, p.edge = false, true, 30, -20, 10, -10
-    p.reach, p.cross, p.cross_end, p.blocks_oneway = 20, 0, 12000, true
-    p.best, p.touched = nil, 0
+    local packed = packed_hash(16, 3000, function(i) return (i - 1) * 4, 12, 2, 8 end)
+    local p = forward_probe(false, -20, 10, 30, 0, 12000)
     local budget = 0
     -- (the scan must be linear: count the probe.touch reads with a proxy)
     local touch = setmetatable({}, {__index = function() budget = budget + 1 end})
