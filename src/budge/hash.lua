@@ -125,10 +125,11 @@ local SMALL = 8
 ---Speed: the scan reads, per cell, three numbers of small dense arrays and the cell's run
 ---of the store, where a pack per cell found by its key in a table (the layout before)
 ---read the key's hash node, the pack's header and its array, three places in memory at
----random. `luajit bench/world.lua --way W --count N --frames 300`, 5 fresh runs each,
----interleaved, 2026-12-03, medians in ns per move: box per tile 648 -> 544 at N = 1000,
----729 -> 677 at 10000; merged boxes 617 -> 514 and 668 -> 580. With the store but the
----slot looked up by key: 597, 699, 571 and 628.
+---random. `luajit bench/world.lua --way W --count N`, 5 fresh runs each, interleaved
+---with the tree before, 2026-12-03, medians in ns per move: box per tile 488 -> 415 at N =
+---1000, 610 -> 513 at 10000; merged boxes 449 -> 411 and 566 -> 555. (A first try of the
+---store with the slot looked up by the cell's key, 300 frames: about half the gain of
+---the rectangle's index, measured against it: 597 against 574 ns, 699 against 615.)
 ---Speed: the scan reads one array per cell, where each record is a table of its own
 ---with a hash part (an actor's 405 bytes on LuaJIT, 530 on Lua 5.4, 850 on both before
 ---its box, kind, mark and cells moved to the array part: a world bench scene of 8000
