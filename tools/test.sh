@@ -55,8 +55,8 @@ report_busted() { # n, label: prints run n's output and records its counts
 }
 # The six runs at once (the specs share no files: temporary ones come from os.tmpname),
 # reported in this order. Two at a time, each pair waiting for its slower run, they took
-# 326 s of a 570 s CI run on a two-core machine (2026-12-03: lua5.1 and 5.2 100 s, 5.3
-# and 5.4 107, luajit and luajit -joff 119); all at once, the cores stay busy.
+# 356 s of a 570 s CI run beside ../shared on a two-core machine; all at once, 347 s of
+# 535 (2026-12-03, one run each: the machine's noise is as large as the difference).
 start_busted 1 lua5.1; start_busted 2 lua5.2; start_busted 3 lua5.3
 start_busted 4 lua5.4; start_busted 5 luajit; start_busted 6 luajit -joff; wait
 report_busted 1 lua5.1; report_busted 2 lua5.2; report_busted 3 lua5.3
