@@ -240,9 +240,9 @@ end
 local date = os.date("!%Y-%m-%d")
 say(("`%s bench/world.lua --frames %d --runs %d`, %s, on %s, %s: ns per actor per frame, "
   .. "median of %d fresh processes (the ways interleaved); ratio to the reference's median "
-  .. "in brackets; each run at least 60000 moves after a warm-up of 50000%s."):format(
+  .. "in brackets; each run at least %d moves after a warm-up of %d%s."):format(
   interpreter, options.frames, options.runs, date,
-  common.interpreter(), common.machine(), options.runs,
+  common.interpreter(), common.machine(), options.runs, MIN_MOVES, WARM_MOVES,
   has_bump and "; bump.lua at most 300000 moves a run" or "; bump.lua not found, skipped"))
 say("")
 local header, rule = "| way |", "|---|"

@@ -232,6 +232,11 @@ local function regrid(self, cx0, cy0, cx1, cy1)
   self._gx0, self._gy0, self._gx1, self._gy1, self._gw = nx0, ny0, nx1, ny1, nw
 end
 
+-- The slot of the cell (cx, cy) (the scans work it out the same way, from locals).
+local function slot_of(self, cx, cy)
+  return (cy - self._gy0) * self._gw + (cx - self._gx0) + 1
+end
+
 -- Appends an entry to the cell (cx, cy); a cell with no room left moves to the top of
 -- the store with room for twice its entries. Its old room is left behind until the next
 -- lay-out (regrid: a box outside the slots' rectangle): the rooms left behind add up to
@@ -244,7 +249,7 @@ end
 -- nil there, the platformer of `luajit bench/jit.lua` aborted 242 side traces a run at
 -- the writes below, "register coalescing too complex").
 local function pack_add(self, cx, cy, x, y, right, bottom, oneway, record)
-  local slot = (cy - self._gy0) * self._gw + (cx - self._gx0) + 1
+  local slot = slot_of(self, cx, cy)
   local store, last = self._store, self._last
   local base = last[slot] + 6
   if base >= self._room[slot] then
@@ -263,7 +268,7 @@ end
 
 -- Takes the `index`th entry out of the cell (cx, cy), keeping the others' order.
 local function pack_remove(self, cx, cy, index)
-  local slot = (cy - self._gy0) * self._gw + (cx - self._gx0) + 1
+  local slot = slot_of(self, cx, cy)
   local store, e = self._store, self._last[slot]
   for j = self._first[slot] + (index - 1) * 6 + 1, e do store[j] = store[j + 6] end
   for j = e + 1, e + 6 do store[j] = false end
