@@ -56,10 +56,10 @@ report_busted() { # n, label: prints run n's output and records its counts
 # The six runs at once (the specs share no files: temporary ones come from os.tmpname),
 # reported in this order, and beside them the LÖVE runs (tools/demo.sh, one process at a
 # time, most of a core for about 200 s on a two-core machine: after the busted runs it left
-# a core idle; 2026-12-04, CI beside ../shared 578 s before this and the next change).
-# LuaJIT's run raises the trace budget: busted, the specs' oracles and the library need
-# more than the default 512 KB of machine code in one process, and LuaJIT flushed and
-# recompiled all of it over and over (the whole suite 93 s at the default budget, 48 s
+# a core idle; 2026-12-04, make test beside ../shared 578 s before this and the next change,
+# 532 s with both). LuaJIT's run raises the trace budget: busted, the specs' oracles
+# and the library need more than the default 512 KB of machine code in one process, and
+# LuaJIT flushed and recompiled all of it over and over (the whole suite 93 s at the default budget, 48 s
 # raised; soak_spec alone 27 s against 2.5 s). The budget changes how fast code runs,
 # never what it computes; what the library needs of the default budget is measured by
 # make bench-jit and bench-game, and the -joff run checks the interpreter's results.
