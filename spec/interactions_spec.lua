@@ -6,6 +6,7 @@ local budge = require("budge")
 local box = require("fixtures.box")
 local garbage = require("fixtures.garbage")
 local random_source = require("fixtures.random")
+local scale = require("spec.support.scale")
 
 local function trace(x, y, n, hits)
   local parts = {string.format("%.17g %.17g %d", x, y, n)}
@@ -22,11 +23,12 @@ local function always(response) return function() return response end end
 local function xy(x, y) return {x, y} end
 
 describe("responses", function()
-  it("slide (and true) is exactly the move without a filter, in 3000 random scenes with "
+  it("slide (and true) is exactly the move without a filter, in " .. scale(3000) .. " random scenes with "
     .. "sensors, for axis_sweep and swept; a sensor far away changes nothing", function()
     local rng = random_source.new(20261201)
     local checked = 0
-    for case = 1, 3000 do
+    local cases = scale(3000)
+    for case = 1, cases do
       local grid = {}
       for r = 1, 12 do
         grid[r] = {}
@@ -82,7 +84,7 @@ describe("responses", function()
         assert.is_true(results[4], method)
       end
     end
-    assert.is_true(checked > 1000, "checked " .. checked)
+    assert.is_true(checked > cases / 3, "checked " .. checked)
   end)
 
   it("slide is exactly the move without a filter where the far side of the band it looks "
@@ -605,9 +607,10 @@ describe("actors that meet actors", function()
       end
       return positions(), snapshot
     end
-    local forward, at_500 = run(false, 2000, 500)
-    assert.are.equal(at_500, (run(false, 500))) -- a rerun is bit-identical
-    assert.are_not.equal(forward, (run(true, 2000))) -- the order of moves decides, as in bump.lua
+    local frames = scale(2000)
+    local forward, at_quarter = run(false, frames, frames / 4)
+    assert.are.equal(at_quarter, (run(false, frames / 4))) -- a rerun is bit-identical
+    assert.are_not.equal(forward, (run(true, frames))) -- the order of moves decides, as in bump.lua
   end)
 end)
 
@@ -641,8 +644,8 @@ local function oracle_contact(a0x, a0y, a1x, a1y, aw, ah, b0x, b0y, b1x, b1y, bw
 end
 
 describe("frame contacts", function()
-  it("find every bullet crossing a moving enemy, exactly as the brute-force oracle, in 10^5 "
-    .. "random frames moved in both orders", function()
+  it("find every bullet crossing a moving enemy, exactly as the brute-force oracle, in "
+    .. scale(100000) .. " random frames moved in both orders", function()
     local world = budge.new_world({cell_size = 32})
     local bullet = world:add_actor(box(0, 0, 4, 4))
     local enemy = world:add_actor(box(0, 0, 16, 16))
@@ -650,7 +653,8 @@ describe("frame contacts", function()
     local rng = random_source.new(42)
     local out = {}
     local found, misses, false_reports, worst = 0, 0, 0, 0
-    for case = 1, 100000 do
+    local cases = scale(100000)
+    for case = 1, cases do
       local ex, ey = rng(-400, 400) / 8, rng(-400, 400) / 8
       local bx, by = ex + rng(-480, 480) / 8, ey + rng(-480, 480) / 8
       local speed, angle = rng(160, 480) / 8, rng(0, 15)
@@ -688,7 +692,7 @@ describe("frame contacts", function()
     end
     assert.are.same({0, 0}, {misses, false_reports})
     assert.is_true(worst <= 1e-9, "t off by " .. worst)
-    assert.is_true(found > 10000, "found " .. found)
+    assert.is_true(found > cases / 10, "found " .. found)
   end)
 
   it("report an actor in water once as began, once as ended, never began while inside", function()
@@ -799,7 +803,7 @@ describe("check", function()
 end)
 
 describe("query_sweep", function()
-  it("equals a brute-force oracle on 10^4 random cases, including tiles", function()
+  it("equals a brute-force oracle on " .. scale(10000) .. " random cases, including tiles", function()
     local world = budge.new_world({cell_size = 32})
     local rng = random_source.new(5)
     local grid = {}
@@ -816,7 +820,7 @@ describe("query_sweep", function()
       return oracle_contact(x, y, x + dx, y + dy, w, h, bx, by, bx, by, bw, bh)
     end
     local out, out_t = {}, {}
-    for _ = 1, 10000 do
+    for _ = 1, scale(10000) do
       local x, y = rng(-200, 1400) / 4, rng(-200, 1400) / 4
       local w, h = rng(0, 24), rng(0, 24)
       if w == 0 then h = 0 end

@@ -5,12 +5,14 @@
 -- the oracle, the counts are right, and no actor is inside a solid unless it started
 -- inside, was reported crushed, or a caught error left it there.
 --
---   BUDGE_SOAK=1000000 busted spec/soak_spec.lua     (10^5 operations by default)
+--   BUDGE_SOAK=1000000 busted spec/soak_spec.lua     (10^5 operations by default, a
+--   quarter of them on the secondary runs: spec/support/scale.lua)
 local budge = require("budge")
 local new_random = require("fixtures.random").new
+local scale = require("spec.support.scale")
 
 local SEED = tonumber(os.getenv("BUDGE_SOAK_SEED") or "") or 20261201
-local OPERATIONS = tonumber(os.getenv("BUDGE_SOAK") or "") or 100000
+local OPERATIONS = tonumber(os.getenv("BUDGE_SOAK") or "") or scale(100000)
 local TILE, ORIGIN_X, ORIGIN_Y, ROWS, COLS = 16, 0.3, 40.1, 16, 20
 
 describe("a world soaked in random operations and hostile callbacks", function()

@@ -1,8 +1,10 @@
--- 100000 random operations on one world, checked after every step against brute force.
+-- 100000 random operations on one world (a quarter of them on the secondary runs:
+-- spec/support/scale.lua), checked after every step against brute force.
 local budge = require("budge")
+local scale = require("spec.support.scale")
 
 local SEED = 20261124
-local OPERATIONS = 100000
+local OPERATIONS = scale(100000)
 
 -- Park-Miller, shared with the benches: the same sequence on every interpreter
 -- (math.random is not).
@@ -12,7 +14,7 @@ local METHODS = {"axis_sweep", "swept", "seed", "wall_type", "min_axis", "fat_cr
 local CONTINUOUS = {axis_sweep = true, swept = true, auto = true}
 local TILE = 16
 
-describe("a world under 100000 random operations", function()
+describe("a world under " .. OPERATIONS .. " random operations", function()
   it("never lets a continuous move or a moving solid leave an actor inside a solid unreported, "
     .. "finds every box, keeps its counts", function()
     local random = new_random(SEED)
@@ -188,8 +190,8 @@ describe("a world under 100000 random operations", function()
         for i = 1, #actors do check_found(actors[i], step) end
       end
     end
-    assert.is_true(moved > 20000)
-    assert.is_true(huge > 500)
-    assert.is_true(moved_solids > 5000)
+    assert.is_true(moved > OPERATIONS / 5)
+    assert.is_true(huge > OPERATIONS / 200)
+    assert.is_true(moved_solids > OPERATIONS / 20)
   end)
 end)
