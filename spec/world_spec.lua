@@ -603,6 +603,80 @@ describe("the world's copy of each actor's box", function()
     assert.same({408, 203}, where(world, actors[4]))
   end)
 
+  it("finds each actor whatever order the game moves them in, through removals and adds, "
+    .. "as a world of that actor alone does", function()
+    -- (world:move tries the slot after the last move's first: games move their actors in
+    -- the order they added them, most of them; any other order, a removal's swap and an add
+    -- must still find the right actor and its copy)
+    local random = require("fixtures.random").new(20261204)
+    local grid = {}
+    for row = 1, 12 do
+      grid[row] = {}
+      for col = 1, 12 do
+        grid[row][col] = (row == 1 or row == 12 or col == 1 or col == 12 or random() < 0.1) and 1 or 0
+      end
+    end
+    local function new_world()
+      local world = budge.new_world({cell_size = 32})
+      world:add_tiles(grid, 16, 16)
+      world:add_solid(box(90, 90, 20, 6))
+      return world
+    end
+    local world, alone = new_world(), {} -- alone[actor]: a world of that actor alone
+    local live, twin = {}, {}
+    local function add()
+      local x, y = random(16, 160), random(16, 160)
+      local actor = world:add_actor(box(x, y, random(4, 12), random(4, 12)))
+      twin[actor] = box(x, y, actor.width, actor.height)
+      alone[actor] = new_world()
+      alone[actor]:add_actor(twin[actor])
+      live[#live + 1] = actor
+    end
+    for _ = 1, 16 do add() end
+    local hits_compared = 0
+    for frame = 1, 400 do
+      local kind = frame % 4 + 1
+      local order, count = {}, #live
+      for i = 1, count do
+        if kind == 1 then order[i] = live[i] -- the order added
+        elseif kind == 2 then order[i] = live[count + 1 - i] -- reversed
+        elseif kind == 3 then order[i] = live[(i + frame) % count + 1] -- rotated
+        else order[i] = live[random(1, count)] end -- at random, some twice
+      end
+      for i = 1, count do
+        local actor = order[i]
+        local dx, dy = random(-48, 48) / 4, random(-48, 48) / 4
+        local x, y, n, hits = world:move(actor, dx, dy)
+        local sides = {}
+        for k = 1, n do sides[k] = hits[k].side end
+        local x2, y2, n2, hits2 = alone[actor]:move(twin[actor], dx, dy)
+        local sides2 = {}
+        for k = 1, n2 do sides2[k] = hits2[k].side end
+        assert.are.same({x2, y2, n2, sides2}, {x, y, n, sides})
+        hits_compared = hits_compared + n
+      end
+      if frame % 7 == 0 then -- a removal swaps the last actor into the gap
+        local index = random(1, #live)
+        local gone = live[index]
+        world:remove(gone)
+        live[index] = live[#live]
+        live[#live] = nil
+        -- (live[i] is the world's slot i: a move of the actor before the gap has the world
+        -- try the gap's slot next, where the removed actor was)
+        if index > 1 then world:move(live[index - 1], 0, 0) end
+        assert.has_error(function() world:move(gone, 1, 0) end,
+          "actor must be an actor of this world (add it with world:add_actor), got a table")
+      end
+      if frame % 9 == 0 and #live < 24 then add() end
+      for i = 1, #live do -- the world's copy of every box is where its actor is
+        assert.are.same({live[i].x, live[i].y}, where(world, live[i]))
+      end
+      local _, n = world:query_rect(0, 0, 192, 192)
+      assert.are.equal(#live + 2, n)
+    end
+    assert.is_true(hits_compared > 800, hits_compared)
+  end)
+
   it("keeps up with the actor that takes a removed moved actor's slot", function()
     local world = budge.new_world({cell_size = 32})
     local a = world:add_actor(box(0, 0, 10, 10))

@@ -7,10 +7,10 @@
 -- so a field the game overwrote since is never read, and a move whose actor's box equals
 -- the copy need not check it again.
 -- world:move touches no record: it finds the actor's slot (its place in the actor list)
--- and writes the box it leaves into the world's copy by slot (_abox: one flat array, five
--- entries a slot), noting the slot once; the records catch up with their cells (actors.rehash)
--- before a query or a move that gathers actors (world:contacts copies the
--- boxes into the records it reads, without their cells). Speed: a record is a
+-- and writes the box it leaves into the world's copy by slot (_abox: one flat array, six
+-- entries a slot: the actor, its box and a mark), noting the slot once; the records catch
+-- up with their cells (actors.rehash) before a query or a move that gathers actors
+-- (world:contacts copies the boxes into the records it reads, without their cells). Speed: a record is a
 -- table of its own, its box three or four cache lines away from the next actor's, and
 -- the lookup of it by actor another; with the flat arrays cachegrind's model of a 512 KB
 -- cache (`valgrind --tool=cachegrind --LL=524288,8,64`, 120 minus 60 frames of `bench/
@@ -45,7 +45,8 @@ function actors.insert(world, record)
   actors.copy(record)
   if record[5] == "actor" then
     world._slot_of[record.item] = index
-    world._abox[index * 5] = false
+    world._abox[index * 6 - 5], world._abox[index * 6] = record.item, false
+    world._last_at = index * 6
     actors.mirror(world, record)
   end
   record._fx, record._fy = record[1], record[2]
@@ -56,7 +57,7 @@ end
 ---@param world budge.World
 ---@param record budge.Record an actor's, in the world
 function actors.mirror(world, record)
-  local abox, at = world._abox, record.index * 5
+  local abox, at = world._abox, record.index * 6
   abox[at - 4], abox[at - 3], abox[at - 2], abox[at - 1] = record[1], record[2], record[3],
     record[4]
 end
@@ -83,12 +84,13 @@ function actors.remove(world, record)
   if record[5] == "actor" then -- the last actor's slot moves into the gap, its mark too
     -- (a record left in _stale has its index: rehash finds its new slot, and skips this one;
     -- the cells of the moved actors are brought up to date at the next query, as before)
-    local abox, at, from = world._abox, index * 5, count * 5
-    for k = -4, 0 do
+    local abox, at, from = world._abox, index * 6, count * 6
+    for k = -5, 0 do
       abox[at + k] = abox[from + k]
       abox[from + k] = nil
     end
     world._slot_of[record.item] = nil
+    world._last_at = from - 6
     if last ~= record then world._slot_of[last.item] = index end
   end
 end
@@ -97,7 +99,7 @@ end
 ---still a size (a filter may have changed it during the move; the next move checks it,
 ---see World:move); the caller marks the slot stale.
 ---@param world budge.World
----@param at integer 5 * the actor's slot
+---@param at integer 6 * the actor's slot
 ---@param width any
 ---@param height any
 function actors.copy_size(world, at, width, height)
@@ -114,7 +116,7 @@ end
 ---@param record budge.Record
 function actors.placed(world, record)
   local item = record.item
-  local abox, at = world._abox, record.index * 5
+  local abox, at = world._abox, record.index * 6
   local x, y, width, height = item.x, item.y, abox[at - 2], abox[at - 1]
   abox[at - 4], abox[at - 3] = x, y
   record[1], record[2], record[3], record[4] = x, y, width, height
@@ -124,11 +126,11 @@ end
 ---Marks the actor whose entries in world._abox end at `at` as moved by world:move: its
 ---record and cells are brought up to date by actors.rehash.
 ---@param world budge.World
----@param at integer 5 * the actor's slot
+---@param at integer 6 * the actor's slot
 function actors.stale(world, at)
   world._abox[at] = true
   local n = world._n_stale + 1
-  world._stale[n] = world._actor_list[at / 5]
+  world._stale[n] = world._actor_list[at / 6]
   world._n_stale = n
 end
 
@@ -153,7 +155,7 @@ function actors.rehash(world)
     stale[i] = nil
     local slot = record.index
     if slot then -- still in the world
-      local at = slot * 5
+      local at = slot * 6
       abox[at] = false
       local x, y, width, height = abox[at - 4], abox[at - 3], abox[at - 2], abox[at - 1]
       record[1], record[2], record[3], record[4] = x, y, width, height

@@ -118,7 +118,7 @@ local function refresh(world)
   for i = 1, kept do
     local record = order[i]
     if record[5] == "actor" then -- (its box as world:move left it: actors.lua)
-      local at = record.index * 5
+      local at = record.index * 6
       record[1], record[2], record[3], record[4] = abox[at - 4], abox[at - 3], abox[at - 2],
         abox[at - 1]
     end
