@@ -677,6 +677,36 @@ describe("the world's copy of each actor's box", function()
     assert.is_true(hits_compared > 800, hits_compared)
   end)
 
+  it("tells actors apart by identity, not by their __eq, and refuses nil in any world", function()
+    -- (a game's entities may compare equal by id; found by a review of the slot try)
+    local same = {__eq = function() return true end}
+    local function entity(x) return setmetatable(box(x, 0, 4, 4), same) end
+    local world = budge.new_world({cell_size = 32})
+    assert.has_error(function() world:move(nil, 1, 0) end, -- an empty world
+      "actor must be an actor of this world (add it with world:add_actor), got nil")
+    local a, b, c = world:add_actor(entity(0)), world:add_actor(entity(100)),
+      world:add_actor(entity(200))
+    world:move(b, 0, 0) -- the next slot tried is c's, then a's
+    assert.same({201, 0}, position(world, c, 1, 0))
+    assert.same({101, 0}, position(world, b, 1, 0)) -- c's slot is tried and holds c
+    local found = {} -- each where it is, and only there (rawequal: == would say yes to any)
+    for i, actor in ipairs({a, b, c}) do
+      local out, n = world:query_rect(actor.x - 1, -1, 6, 6)
+      found[i] = n == 1 and rawequal(out[1], actor)
+    end
+    assert.same({true, true, true}, found)
+    world:remove(c)
+    world:move(b, 0, 0) -- the next slot tried is past the last one
+    assert.has_error(function() world:move(nil, 1, 0) end,
+      "actor must be an actor of this world (add it with world:add_actor), got nil")
+    world:move(a, 0, 0) -- the next slot tried is b's
+    assert.has_error(function() world:move(c, 1, 0) end,
+      "actor must be an actor of this world (add it with world:add_actor), got a table")
+    assert.has_error(function() world:move(entity(100), 1, 0) end,
+      "actor must be an actor of this world (add it with world:add_actor), got a table")
+    assert.same({{0, 0}, {101, 0}, {201, 0}}, {{a.x, a.y}, {b.x, b.y}, {c.x, c.y}})
+  end)
+
   it("keeps up with the actor that takes a removed moved actor's slot", function()
     local world = budge.new_world({cell_size = 32})
     local a = world:add_actor(box(0, 0, 10, 10))

@@ -29,7 +29,9 @@ local check_box, check_wall_type, check_number = box.check_box, box.check_wall_t
   box.check_number
 local describe, is_finite, check_filter = box.describe, box.is_finite, box.check_filter
 local METHOD, NAME_LIST = move.BY_NAME, move.NAME_LIST
-local format, error, type, pcall = string.format, error, type, pcall
+local format, error, type, pcall, rawequal = string.format, error, type, pcall, rawequal
+-- LuaJIT: world:move tries the slot after the last move's first (see World:move)
+local TRY_NEXT_SLOT = rawget(_G, "jit") ~= nil
 
 local SOLID, ACTOR, TILES, SENSOR = entry.SOLID, entry.ACTOR, entry.TILES, entry.SENSOR
 local A_KIND = entry.A_KIND
@@ -102,8 +104,8 @@ local world = {}
 ---world:move left it (the record's copy until actors.rehash): the actor at 6 * slot - 5;
 ---x, y, width, height at 6 * slot - 4 to 6 * slot - 1; at 6 * slot whether world:move
 ---moved it since actors.rehash
----@field package _next_at integer 6 * (the slot after the last move's): where world:move
----looks for its actor first
+---@field package _next_at integer 6 * (the slot after the last move's, wrapping): where
+---world:move on LuaJIT looks for its actor first (a hint: past the last slot after a removal)
 ---@field package _last_at integer 6 * the number of actors (the last slot's end)
 ---@field package _stale budge.Record[] those actors' records
 ---@field package _n_stale integer
@@ -422,19 +424,22 @@ function World:move(actor, dx, dy, method)
   -- through those two calls and the phases' own, the world bench's tile moves took 2540
   -- ns instead of 2237 on Lua 5.4 (`lua5.4 bench/world.lua --profile tiles --frames 100`,
   -- median of 5, 2026-12-01).
-  -- The actor's slot: the one after the last move's first (games move their actors in
-  -- the order they added them, most of them), the lookup by actor when that holds another.
-  -- The world's copy holds each actor beside its box, so the try reads the cache line the
-  -- move reads anyway; the lookup in a table of 10000 actors missed the cache. LuaJIT,
-  -- `luajit bench/world.lua --way tiles --count N`, 5 fresh runs each, interleaved with
-  -- the lookup alone, 2026-12-04: 104 ns per move instead of 113 at 100 actors, 105
-  -- instead of 117 at 1000, 124 instead of 142 at 10000. The next slot wraps by `%`, not
-  -- a branch: with a branch the first move of each frame took a side trace carrying the
-  -- whole move (make bench-jit's crowd 107 traces and 155 KB instead of 98 and 117).
+  -- The actor's slot. On LuaJIT, the one after the last move's first (games move their
+  -- actors in the order they added them, most of them), the lookup by actor when that
+  -- holds another: the world's copy holds each actor beside its box, so the try reads
+  -- the cache line the move reads anyway, where the lookup in a table of 10000 actors
+  -- missed the cache. `luajit bench/world.lua --way tiles --count N`, 5 fresh runs each,
+  -- interleaved with the lookup alone, 2026-12-04: 104 ns per move instead of 113 at 100
+  -- actors, 105 instead of 117 at 1000, 124 instead of 142 at 10000. The next slot wraps
+  -- by `%`, not a branch: with a branch the first move of each frame took a side trace
+  -- carrying the whole move (make bench-jit's crowd 107 traces and 155 KB instead of 98
+  -- and 117). rawequal, not ==: an actor's __eq must not make it another's (a game's
+  -- entities may compare by id), and a nil actor must not match an empty slot. On Lua
+  -- 5.x rawequal is a call into C, dearer than the lookup: they look up.
   local at = self._next_at -- (where the entries of the slot after the last move's end)
   do -- (LuaJIT: each local still in scope at the move is carried into its side traces)
     local abox = self._abox
-    if abox[at - 5] ~= actor then
+    if not TRY_NEXT_SLOT or actor == nil or not rawequal(abox[at - 5], actor) then
       at = self._slot_of[actor] -- (the actor's slot, then where its entries end)
       if at == nil then check_move(self, actor, dx, dy, method) end
       at = at * 6
