@@ -82,6 +82,29 @@ describe("a hostile reviewer's cases", function()
     assert.is_true(found_at(world, solid))
   end)
 
+  it("a game's __eq on its boxes is never run by a move (Lua 5.3+ would run it on ==)", function()
+    -- (a game's entities may compare by id, or raise on a stranger: the move crosses a
+    -- solid with such an __eq in its x phase and tiles in its y phase, where it looks
+    -- among its hits for the tiles it reported already)
+    local strict = {__eq = function() error("__eq ran", 0) end}
+    local expected = {axis_sweep = {"glass cross", "tiles 2,2 cross", "tiles 2,3 cross"},
+      swept = {"glass cross", "tiles 2,3 cross"}} -- (the straight line meets row 3 only)
+    for _, method in ipairs({"axis_sweep", "swept"}) do
+      local world = budge.new_world({cell_size = 32})
+      local tiles = world:add_tiles({{0, 0, 0}, {0, 1, 0}, {0, 1, 0}}, 16, 16)
+      local glass = world:add_solid(setmetatable(box(-40, 0, 8, 8), strict))
+      local actor = world:add_actor(box(-60, 0, 8, 8))
+      actor.filter = function() return "cross" end
+      local x, y, n, hits = world:move(actor, 80, 40, method)
+      local got = {}
+      for i = 1, n do
+        got[i] = (rawequal(hits[i].other, glass) and "glass" or rawequal(hits[i].other, tiles)
+          and "tiles " .. hits[i].col .. "," .. hits[i].row or "?") .. " " .. hits[i].response
+      end
+      assert.same({20, 40, expected[method]}, {x, y, got}, method)
+    end
+  end)
+
   it("count tells a removed actor and layer are gone while the filter runs", function()
     local world = budge.new_world()
     world:add_solid(box(50, 0, 10, 100))

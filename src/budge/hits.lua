@@ -229,7 +229,9 @@ function hits.has_tile(world, first, tiles, col, row)
   local list = world._hits
   for i = first, world._n_hits do
     local hit = list[i]
-    if hit.other == tiles and hit.col == col and hit.row == row then return true end
+    -- (col first: a hit on a game's box has none, and `==` on its table would run the
+    -- game's __eq on Lua 5.3+)
+    if hit.col == col and hit.row == row and hit.other == tiles then return true end
   end
   return false
 end
