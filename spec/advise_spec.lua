@@ -147,6 +147,28 @@ describe("budge.advise", function()
       .. "catalogue case", reasons[1], 1, true)
   end)
 
+  it("tells the game's boxes apart by identity, whatever their __eq says", function()
+    -- (a game's class may compare by id, always yes, or raise: found by an audit)
+    local function scene(eq)
+      local class = {__eq = eq}
+      local function block(x, y) return setmetatable(box(x, y, 16, 16), class) end
+      return {solids = {block(0, 0), block(0, 16)}, -- a seam in a wall
+        movers = {{width = 8, height = 8, max_speed = 9}}}
+    end
+    local method, reasons = budge.advise(scene(nil))
+    assert.are.equal("axis_sweep", method)
+    assert.truthy(reasons[3]:find("make a seam in a wall", 1, true))
+    for _, eq in ipairs({function() return true end, function() error("__eq ran", 0) end}) do
+      local other_method, other_reasons = budge.advise(scene(eq))
+      assert.are.same({method, reasons}, {other_method, other_reasons})
+    end
+    local base = {__eq = function() return true end} -- a class whose instances say yes
+    local entity = setmetatable({}, setmetatable({}, base))
+    getmetatable(entity).__eq = base.__eq
+    assert.has_error(function() budge.advise({world = entity, movers = scene().movers}) end,
+      "scene.world must be a budge world (budge.new_world()), got a table")
+  end)
+
   it("rejects bad scenes with messages that name the field and the value", function()
     local movers = {{width = 12, height = 12, max_speed = 1}}
     assert.has_error(function() budge.advise(nil) end,

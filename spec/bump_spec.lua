@@ -709,6 +709,10 @@ describe("budge.bump", function()
         {function() world:queryRect(0, 0, -1, -1) end, "w must be a finite number > 0, got %-1"},
         {function() world.move("a", 1, 1) end,
           "call it as world:move%(...%), with a colon, got \"a\" for the world"},
+        {function() -- (an item of a class whose metatable has an __eq: compared raw)
+          local class = setmetatable({}, {__eq = function() return true end})
+          world.add(setmetatable({}, class), 0, 0, 8, 8)
+        end, "call it as world:add%(...%), with a colon, got a table for the world"},
         {function() world:addResponse("x", 3) end, "response must be a function, got 3"},
         {function() world:getRect({}) end, "item must be an item of this world"},
       }

@@ -64,6 +64,24 @@ describe("an error raised by a filter", function()
     assert.same({5, 40}, position(world, actor, 0, 100))
     assert.same({{actor}, 1}, {world:query_point(10, 45)})
   end)
+
+  it("propagates an error value that is a table, whatever __eq its class has", function()
+    -- (a class whose own metatable is its parent's, with an __eq by id: budge told its
+    -- own response errors apart with ==, which ran it on Lua 5.3+; found by an audit)
+    local base = {__eq = function(a, b) return a.id == b.id end}
+    base.__index = base
+    local game_error = setmetatable({__eq = base.__eq}, base)
+    game_error.__index = game_error
+    local raised = setmetatable({code = "boom"}, game_error)
+    local world = budge.new_world()
+    world:add_solid(box(20, 0, 10, 10))
+    local actor = world:add_actor(box(0, 0, 8, 8))
+    actor.filter = function() error(raised) end
+    local ok, err = pcall(world.move, world, actor, 30, 0)
+    assert.are.same({false, true}, {ok, rawequal(err, raised)})
+    actor.filter = nil
+    assert.same({12, 0}, position(world, actor, 30, 0))
+  end)
 end)
 
 describe("a hostile reviewer's cases", function()

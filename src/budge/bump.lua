@@ -30,8 +30,8 @@ local BRANCH_FREE = rawget(_G, "jit") ~= nil
 local box_enter, before, entry_axis = sweep.box_enter, sweep.before, sweep.entry_axis
 local BELOW_ONE = sweep.BELOW_ONE
 local check_span = entry.check_span
-local format, error, type, setmetatable, getmetatable = string.format, error, type,
-  setmetatable, getmetatable
+local format, error, type, setmetatable, getmetatable, rawequal = string.format, error, type,
+  setmetatable, getmetatable, rawequal
 local floor, ceil, abs, min, max, HUGE = math.floor, math.ceil, math.abs, math.min, math.max,
   math.huge
 
@@ -368,7 +368,7 @@ end
 -- The start of every method: called with a colon, and not, when it changes the world or
 -- moves in it, from inside a move's filter or custom response.
 local function enter(self, call)
-  if getmetatable(self) ~= World then
+  if not rawequal(getmetatable(self), World) then -- (a game item's class may have an __eq)
     error(format("call it as world:%s(...), with a colon, got %s for the world", call,
       describe(self)), 3)
   end

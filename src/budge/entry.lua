@@ -12,7 +12,7 @@ local hits = require(here .. ".hits")
 
 local describe = box.describe
 local format, error, type, pcall = string.format, error, type, pcall
-local getmetatable = getmetatable
+local getmetatable, rawequal = getmetatable, rawequal
 local BadResponse = hits.BadResponse
 
 local entry = {}
@@ -122,7 +122,8 @@ function entry.guarded(self, busy, level, body, recover, a, b, c, d, e)
   if not ok then recover(self, a, b, c, d, e) end
   entry.flush(self)
   if not ok then
-    if getmetatable(result) == BadResponse then error(result.message, level + 1) end
+    -- (rawequal: the game's error may be a table whose metatable has an __eq of its own)
+    if rawequal(getmetatable(result), BadResponse) then error(result.message, level + 1) end
     error(result, 0)
   end
   return result

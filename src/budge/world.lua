@@ -150,7 +150,7 @@ World.__index = World
 ---@param value any
 ---@return boolean
 function world.is_world(value)
-  return getmetatable(value) == World
+  return rawequal(getmetatable(value), World) -- (a game class's metatable may have an __eq)
 end
 
 ---Creates an empty world.
