@@ -444,7 +444,9 @@ function World:move(actor, dx, dy, method)
       if at == nil then check_move(self, actor, dx, dy, method) end
       at = at * 6
     end
-    self._next_at = at % self._last_at + 6 -- (after the last slot, the first: no branch)
+    if TRY_NEXT_SLOT then -- (after the last slot, the first: no branch)
+      self._next_at = at % self._last_at + 6
+    end
     -- check_box's and check_number's tests written out (x - x is 0 for a finite number
     -- only); the functions run only to raise their error. Through them, 9 calls per move:
     -- `lua5.4 bench/world.lua --way tiles --count 1000 --frames 60` took 2369 ns per move
