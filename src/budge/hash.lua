@@ -7,7 +7,8 @@
 -- a number from the hash's own counter, so two hashes (two worlds) never disturb each
 -- other. The axis scan of a packed hash (the world's solids: see hash.new) reads the
 -- cells' packed copies of their records' boxes (the store) instead and stamps nothing: a
--- record met in two cells is added to the probe's touch list once, checked on a tie.
+-- record met in two cells is added to the probe's touch list once, checked on a tie. The
+-- store leaves a box out of the cells its far sides only touch (see packed_end).
 --
 -- The hash stores what it is given: it reads and writes only the fields declared in
 -- budge.HashRecord. Cells are never freed, nor their room in the store: a world whose
