@@ -91,7 +91,10 @@ end
 -- room, and no two cells' rooms overlap.
 local function check_packs(h)
   local cells, rooms = 0, {}
-  local store, first, last, room = h._store, h._first, h._last, h._room
+  local store, room = h._store, h._room
+  -- (a slot's first and last entries, side by side in _span)
+  local first = setmetatable({}, {__index = function(_, slot) return h._span[2 * slot - 1] end})
+  local last = setmetatable({}, {__index = function(_, slot) return h._span[2 * slot] end})
   for key, cell in pairs(h._cells) do -- (a spec: pairs is fine here)
     local cx = (key - 2 ^ 25 * (2 ^ 26 + 1)) % 2 ^ 26
     if cx >= 2 ^ 25 then cx = cx - 2 ^ 26 end

@@ -86,10 +86,10 @@ hash.SENTINEL = SENTINEL
 ---@field package _big budge.HashRecord[] the records spanning more than BIG_CELLS cells
 ---@field package _packed boolean keeps a packed copy of its records' boxes (the store)
 ---@field package _store any[] packed hashes: every cell's packed boxes, in one array
----@field package _first table<integer, integer> a cell's slot -> where its first entry in
----the store starts (its entries: see hash.new)
----@field package _last table<integer, integer> slot -> where its last entry starts (an
----empty cell: less than its first)
+---@field package _span table<integer, integer> for a cell's slot, at 2 * slot - 1 where its
+---first entry in the store starts (its entries: see hash.new), at 2 * slot where its last
+---entry starts (an empty cell: less than its first): the two side by side, in one cache
+---line (in two arrays, two lines from far apart per cell a scan visits)
 ---@field package _room table<integer, integer> slot -> where the store's room for the
 ---cell ends (the next cell's room may start there)
 ---@field package _top integer where the store's first unused room starts
@@ -121,8 +121,8 @@ local SMALL = 8
 ---the world's solids (world.lua), whose boxes change only by a remove and an insert. All
 ---the cells' copies are in one flat array, the store: a cell's entries one after the
 ---other, in the cell's order, six values each (an entry starting at b: b + 1 x, b + 2 y,
----b + 3 right, b + 4 bottom, b + 5 oneway, b + 6 the record), from _first[slot] to
----_last[slot], with room up to _room[slot]. A cell's slot is a number worked out from its
+---b + 3 right, b + 4 bottom, b + 5 oneway, b + 6 the record), from _span[2 * slot - 1]
+---to _span[2 * slot], with room up to _room[slot]. A cell's slot is a number worked out from its
 ---column and row: while the cells in use fill a good part of the rectangle around them,
 ---an index into that rectangle (the three tables are arrays, read by index), otherwise
 ---the cell's key (tables with a hash part: see regrid).
@@ -145,7 +145,7 @@ local SMALL = 8
 function hash.new(cell_size, packed)
   return setmetatable({cell_size = cell_size, _cells = {}, _stamp = 0,
     _all = {SENTINEL, SENTINEL}, _n = 0, _big = {}, _packed = packed == true,
-    _store = {}, _first = {}, _last = {}, _room = {}, _top = 0,
+    _store = {}, _span = {}, _room = {}, _top = 0,
     _gx0 = 0, _gy0 = 0, _gx1 = -1, _gy1 = -1, _gw = 0, _cx = {}, _cy = {}}, Hash)
 end
 
@@ -216,22 +216,24 @@ local function regrid(self, cx0, cy0, cx1, cy1)
       nx0, ny0, nx1, ny1, nw = SPARSE_X0, SPARSE_Y0, SPARSE_END, SPARSE_END, KEY_STRIDE
     end
   end
-  local old_store, old_first, old_last = self._store, self._first, self._last
-  local store, first, last, room = {}, {}, {}, {}
+  local old_store, old_span = self._store, self._span
+  local store, span, room = {}, {}, {}
   if nw ~= KEY_STRIDE then
-    for slot = 1, nw * (ny1 - ny0 + 1) do first[slot], last[slot], room[slot] = 0, -6, 0 end
+    for slot = 1, nw * (ny1 - ny0 + 1) do
+      span[2 * slot - 1], span[2 * slot], room[slot] = 0, -6, 0
+    end
   end
   local top = 0
   for i = 1, n do
     local cx, cy = xs[i], ys[i]
     local from, to = (cy - gy0) * gw + (cx - gx0) + 1, (cy - ny0) * nw + (cx - nx0) + 1
-    local b, e = old_first[from], old_last[from]
+    local b, e = old_span[2 * from - 1], old_span[2 * from]
     for j = 1, e + 6 - b do store[top + j] = old_store[b + j] end
-    first[to], last[to] = top, top + e - b
+    span[2 * to - 1], span[2 * to] = top, top + e - b
     top = top + e + 6 - b
     room[to] = top
   end
-  self._store, self._first, self._last, self._room = store, first, last, room
+  self._store, self._span, self._room = store, span, room
   self._top = top
   self._gx0, self._gy0, self._gx1, self._gy1, self._gw = nx0, ny0, nx1, ny1, nw
 end
@@ -272,31 +274,31 @@ end
 -- the writes below, "register coalescing too complex").
 local function pack_add(self, cx, cy, x, y, right, bottom, oneway, record)
   local slot = slot_of(self, cx, cy)
-  local store, last = self._store, self._last
-  local base = last[slot] + 6
+  local store, span = self._store, self._span
+  local base = span[2 * slot] + 6
   if base >= self._room[slot] then
-    local first, top = self._first[slot], self._top
+    local first, top = span[2 * slot - 1], self._top
     local used = base - first
     local room = top + max(used * 2, 24)
     for j = 1, used do store[top + j], store[first + j] = store[first + j], false end
     for j = top + used + 1, room do store[j] = false end
-    self._first[slot], self._room[slot], self._top = top, room, room
+    span[2 * slot - 1], self._room[slot], self._top = top, room, room
     base = top + used
   end
   store[base + 1], store[base + 2], store[base + 3] = x, y, right
   store[base + 4], store[base + 5], store[base + 6] = bottom, oneway, record
-  last[slot] = base
+  span[2 * slot] = base
 end
 
 -- Takes `record`'s entry out of the cell (cx, cy), keeping the others' order.
 local function pack_remove(self, cx, cy, record)
   local slot = slot_of(self, cx, cy)
-  local store, e = self._store, self._last[slot]
-  local from = self._first[slot]
+  local store, span = self._store, self._span
+  local e, from = span[2 * slot], span[2 * slot - 1]
   while not rawequal(store[from + 6], record) do from = from + 6 end
   for j = from + 1, e do store[j] = store[j + 6] end
   for j = e + 1, e + 6 do store[j] = false end
-  self._last[slot] = e - 6
+  span[2 * slot] = e - 6
 end
 
 ---Registers `record` in every cell the rectangle touches, edges included.
@@ -345,7 +347,7 @@ function Hash:insert(record, x, y, width, height)
         self._cx[made], self._cy[made] = cx, cy
         if self._gw == KEY_STRIDE then -- (a rectangle's slots start empty; a key's is made here)
           local top = self._top
-          self._first[key], self._last[key], self._room[key] = top, top - 6, top
+          self._span[2 * key - 1], self._span[2 * key], self._room[key] = top, top - 6, top
         end
       end
     end
@@ -674,6 +676,7 @@ local function consider(probe, record, low, length)
   if stop ~= best then probe.best = stop; touched = 0 end
   touched = touched + 1
   probe.touch[touched] = record
+  probe.touch_left[touched], probe.touch_top[touched] = record[1], record[2]
   probe.touched = touched
 end
 
@@ -719,6 +722,7 @@ local function consider_packed(probe, pack, base, face, cx, cy)
   end
   touched = touched + 1
   probe.touch[touched] = record
+  probe.touch_left[touched], probe.touch_top[touched] = pack[base + 1], pack[base + 2]
   probe.touched = touched
 end
 
@@ -748,7 +752,7 @@ end
 -- move were blacklisted one after the other. With the break: 0 in 10.
 local TINY = 2 ^ -1022
 local function scan_packs(self, probe, cx0, cy0, columns, count)
-  local store, firsts, lasts = self._store, self._first, self._last
+  local store, span = self._store, self._span
   local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local k, base, last, cx, cy = -1, 1, -5, 0, 0
   while true do
@@ -758,8 +762,8 @@ local function scan_packs(self, probe, cx0, cy0, columns, count)
       local row = floor(k / columns)
       cx, cy = cx0 + (k - row * columns), cy0 + row
       local slot = (cy - gy0) * gw + (cx - gx0) + 1 -- (the slot insert uses)
-      local first = firsts[slot]
-      if first then base, last = first, lasts[slot] end
+      local first = span[2 * slot - 1]
+      if first then base, last = first, span[2 * slot] end
     else
       local face = store[base + probe.face_slot]
       local signed = probe.sign * face
@@ -781,7 +785,7 @@ end
 -- with the records' scan (scan_cell: unpacked, as Lua 5.x had it), 3470 with this; merged
 -- boxes 3453 -> 3301.
 local function scan_packs_compared(self, probe, cx0, cy0, columns, count)
-  local store, firsts, lasts = self._store, self._first, self._last
+  local store, span = self._store, self._span
   local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local face_slot, cross_slot = probe.face_slot, probe.cross_slot
   local cross, cross_end = probe.cross, probe.cross_end
@@ -791,9 +795,9 @@ local function scan_packs_compared(self, probe, cx0, cy0, columns, count)
     local row = floor(k / columns)
     local cx, cy = cx0 + (k - row * columns), cy0 + row
     local slot = (cy - gy0) * gw + (cx - gx0) + 1
-    local first = firsts[slot]
+    local first = span[2 * slot - 1]
     if first then
-      for base = first, lasts[slot], 6 do
+      for base = first, span[2 * slot], 6 do
         local face = store[base + face_slot]
         if face >= low and face <= high and store[base + cross_slot] < cross_end
           and store[base + cross_slot + 2] > cross then

@@ -264,8 +264,8 @@ local function phase_stop(world, probe)
       local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
       for c = 1, probe.touched do
         local record = touch[c]
-        local item = record.item
-        add_hit(world, item, side, nil, nil, item.y, item.x, record.id, SLIDE, t)
+        add_hit(world, record.item, side, nil, nil, probe.touch_top[c], probe.touch_left[c],
+          record.id, SLIDE, t)
       end
       probe.sources = probe.sources + probe.touched
     end
