@@ -300,6 +300,57 @@ describe("budge.bump", function()
       assert.same({0, 8}, {(world:getRect(1)), (world:getRect(2))})
     end)
 
+    it("blocks with an item that moved into a cell its box only touched before", function()
+      -- (the world's hash keeps each item's box by cell, and leaves it out of a cell its
+      -- box reaches only by a far side: a move into such a cell must register it there)
+      local world = bump.newWorld(64)
+      world:add("a", 0, 52, 12, 12) -- its bottom on the edge of the second row of cells
+      world:add("b", 0, 80, 12, 12)
+      assert.same({0, 57}, xy(world:move("a", 0, 57))) -- now in the second row too
+      assert.same({0, 69}, xy(world:move("b", 0, 66))) -- (its move stays in that row)
+    end)
+
+    it("never ends a move inside another item, in 4000 moves on cell edges", function()
+      -- items on a grid of 4 px in cells of 16: boxes on cell edges at every move; the
+      -- oracle is every other item's box (an item that starts outside every other and
+      -- slides ends outside every other)
+      local random = random_source.new(515)
+      local world = bump.newWorld(16)
+      local boxes = {}
+      for _ = 1, 60 do
+        local x, y = random(0, 50) * 4, random(0, 50) * 4
+        local w, h = random(1, 4) * 4, random(1, 4) * 4
+        local free = true
+        for _, b in ipairs(boxes) do
+          if x < b[1] + b[3] and b[1] < x + w and y < b[2] + b[4] and b[2] < y + h then
+            free = false
+          end
+        end
+        if free then
+          boxes[#boxes + 1] = {x, y, w, h}
+          world:add(#boxes, x, y, w, h)
+        end
+      end
+      local moves, blocked = 0, 0
+      for _ = 1, 4000 do
+        local item = random(1, #boxes)
+        local x, y, w, h = world:getRect(item)
+        local gx, gy = x + random(-24, 24), y + random(-24, 24)
+        local ax, ay = world:move(item, gx, gy)
+        if ax ~= gx or ay ~= gy then blocked = blocked + 1 end
+        for other = 1, #boxes do
+          if other ~= item then
+            local ox, oy, ow, oh = world:getRect(other)
+            assert.is_false(ax < ox + ow and ox < ax + w and ay < oy + oh and oy < ay + h,
+              ("item %d at %s,%s inside item %d"):format(item, ax, ay, other))
+          end
+        end
+        moves = moves + 1
+      end
+      assert.are.equal(4000, moves)
+      assert.is_true(blocked > 600, blocked) -- (922 on every interpreter)
+    end)
+
     it("ends exactly at the goal on an axis nothing stopped (x + (goal - x) can round)", function()
       local world = bump.newWorld()
       world:add("p", 1000000.1, 0.7, 1, 1)

@@ -404,10 +404,15 @@ end
 function bump.newWorld(cell_size)
   if cell_size == nil then cell_size = 64 end
   check_positive(cell_size, "cellSize", 3)
+  -- The items are the actors of a budge world whose hash of actors keeps their boxes
+  -- packed by cell (hash.new: a move reads its cells' boxes side by side, not each item's
+  -- record; see hash.lua's collect_packed), set before any item is added.
+  local world = world_module.new_world({cell_size = cell_size})
+  world._actors = hash_module.new(cell_size, true)
   local self = setmetatable({
     cellSize = cell_size,
     responses = {},
-    _world = world_module.new_world({cell_size = cell_size}),
+    _world = world,
     _proxies = {},
     _list = {},
     _filter = nil, -- the running move's filter (nil: the default, "slide" on everything)
@@ -948,11 +953,14 @@ function World:move(item, goal_x, goal_y, filter)
     local hash = self._world._actors
     local w, h = proxy.width, proxy.height
     local cx0, cy0, cx1, cy1 = hash:cells_of(x, y, w, h)
-    if cx0 < record[8] or cy0 < record[9] or cx1 > record[10] or cy1 > record[11] then
+    -- (the store's last column and row, [12] and [13], not the cells' [10] and [11]: a
+    -- box that reaches a cell only by its far side has no entry there, see hash.lua)
+    if cx0 < record[8] or cy0 < record[9] or cx1 > record[12] or cy1 > record[13] then
       local margin = self._margin
       hash:remove(record)
       hash:insert(record, x - margin, y - margin, w + 2 * margin, h + 2 * margin)
     end
+    hash:repack(record, x, y, x + w, y + h) -- (its own box, in the cells of the loose one)
   end
   return x, y, self._move_cols, n
 end

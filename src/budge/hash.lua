@@ -416,6 +416,29 @@ function Hash:moved(record, x, y, width, height)
   end
 end
 
+---In a packed hash, writes the box (x, y, right, bottom) over the record's entries in the
+---store, its cells unchanged: a record whose cells are those of a box around its own
+---(budge.bump's loose cells) keeps its own box there, for Hash:collect_overlapping. (A
+---record spanning more than BIG_CELLS cells has no entries: nothing to do.)
+---@param record budge.HashRecord
+---@param x number
+---@param y number
+---@param right number
+---@param bottom number
+function Hash:repack(record, x, y, right, bottom)
+  if record._big_slot then return end
+  local store, span = self._store, self._span
+  local cx0, cy0 = record[8], record[9]
+  local columns = record[12] - cx0 + 1
+  for k = 0, columns * (record[13] - cy0 + 1) - 1 do -- (one flat loop: see insert)
+    local row = floor(k / columns)
+    local slot = slot_of(self, cx0 + (k - row * columns), cy0 + row)
+    local base = span[2 * slot - 1]
+    while not rawequal(store[base + 6], record) do base = base + 6 end
+    store[base + 1], store[base + 2], store[base + 3], store[base + 4] = x, y, right, bottom
+  end
+end
+
 -- Appends to `out` the records of list[1..count] whose cells meet (cx0..cx1, cy0..cy1).
 local function list_touching(list, count, cx0, cy0, cx1, cy1, out, n)
   for i = 1, count do
@@ -598,6 +621,59 @@ local function collect_kept(self, x0, y0, x1, y1, out, n, in_cell)
   return n
 end
 
+-- Hash:collect_overlapping over a packed hash: the cells' entries in the store, not the
+-- records (a record is a table of its own, its box in its array part: two or three
+-- cache lines apart per record, where the store holds a cell's boxes side by side), and
+-- no stamps written: a record met in several of the scanned cells is kept in the first of
+-- them in the scan's order, (max(its first column, the scan's), max(its first row, the
+-- scan's)), as consider_packed keeps a tie. (Its entries hold its own box, which lies in
+-- the box its cells were worked out from: a record that overlaps the rectangle strictly
+-- has an entry in every scanned cell the overlap meets with more than an edge, and that
+-- cell is one.) A rectangle over more cells than the hash has records, or a big record,
+-- is collect_kept's. One flat loop, as scan_packs (LuaJIT shaping: see there).
+-- Speed: budge.bump's moves (its items the world's actors, in a packed hash): see the
+-- CHANGELOG's entry of 2026-12-04 (interleaved fresh runs, before and after).
+local function collect_packed(self, x0, y0, x1, y1, out, n)
+  local size = self.cell_size
+  local cx0, cy0 = floor(x0 / size), floor(y0 / size)
+  local cx1, cy1 = floor(x1 / size), floor(y1 / size)
+  if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > self._n then
+    return collect_kept(self, x0, y0, x1, y1, out, n, overlapping)
+  end
+  -- only the cells with a slot can hold anything (comparisons: see Hash:axis_stop)
+  if cx0 < self._gx0 then cx0 = self._gx0 end
+  if cy0 < self._gy0 then cy0 = self._gy0 end
+  if cx1 > self._gx1 then cx1 = self._gx1 end
+  if cy1 > self._gy1 then cy1 = self._gy1 end
+  local columns = cx1 - cx0 + 1
+  local count = (columns > 0 and cy1 >= cy0) and columns * (cy1 - cy0 + 1) or 0
+  local store, span = self._store, self._span
+  local gx0, gy0, gw = self._gx0, self._gy0, self._gw
+  local k, base, last, cx, cy = -1, 1, -5, 0, 0
+  while true do
+    if base > last then -- the next cell
+      k = k + 1
+      if not (k < count) then break end -- luacheck: ignore (not >=: a NaN count ends it too)
+      local row = floor(k / columns)
+      cx, cy = cx0 + (k - row * columns), cy0 + row
+      local slot = (cy - gy0) * gw + (cx - gx0) + 1
+      local first = span[2 * slot - 1]
+      if first then base, last = first, span[2 * slot] end
+    else
+      local x, y = store[base + 1], store[base + 2]
+      if min(x1 - x, store[base + 3] - x0, y1 - y, store[base + 4] - y0) > 0
+        and max(floor(x / size), cx0) == cx and max(floor(y / size), cy0) == cy then
+        n = n + 1
+        out[n] = store[base + 6]
+      end
+      base = base + 6
+    end
+  end
+  local big = self._big
+  if big[1] then return overlapping(big, self:next_stamp(), x0, y0, x1, y1, out, n) end
+  return n
+end
+
 ---Appends to `out` (from index n + 1) every record whose box (its x, y, width and
 ---height) overlaps the rectangle from (x0, y0) to (x1, y1) strictly, once each, and
 ---returns the new count; in the order Hash:collect gives. (budge.bump's moves: the
@@ -612,6 +688,7 @@ end
 ---@param n integer how many entries of `out` to keep
 ---@return integer n
 function Hash:collect_overlapping(x0, y0, x1, y1, out, n)
+  if self._packed then return collect_packed(self, x0, y0, x1, y1, out, n) end
   return collect_kept(self, x0, y0, x1, y1, out, n, overlapping)
 end
 
