@@ -118,7 +118,8 @@ local SMALL = 8
 
 ---A new, empty hash. With `packed`, the hash keeps beside its cells a packed copy of
 ---their records' boxes, as inserted, which Hash:axis_stop reads instead of the records:
----the world's solids (world.lua), whose boxes change only by a remove and an insert. All
+---the world's solids (world.lua), whose boxes change only by a remove and an insert, and
+---budge.bump's items (their own boxes written over their entries by Hash:repack). All
 ---the cells' copies are in one flat array, the store: a cell's entries one after the
 ---other, in the cell's order, six values each (an entry starting at b: b + 1 x, b + 2 y,
 ---b + 3 right, b + 4 bottom, b + 5 oneway, b + 6 the record), from _span[2 * slot - 1]
@@ -621,6 +622,19 @@ local function collect_kept(self, x0, y0, x1, y1, out, n, in_cell)
   return n
 end
 
+-- The cells (cx0..cx1, cy0..cy1) of a packed hash narrowed to those with a slot (only
+-- they can hold anything, see regrid): their first column and row, how many columns and
+-- how many cells. Comparisons on every interpreter: a NaN side leaves no cell to scan
+-- (LuaJIT's math.max(NaN, a) is a).
+local function slotted(self, cx0, cy0, cx1, cy1)
+  if cx0 < self._gx0 then cx0 = self._gx0 end
+  if cy0 < self._gy0 then cy0 = self._gy0 end
+  if cx1 > self._gx1 then cx1 = self._gx1 end
+  if cy1 > self._gy1 then cy1 = self._gy1 end
+  local columns = cx1 - cx0 + 1
+  return cx0, cy0, columns, (columns > 0 and cy1 >= cy0) and columns * (cy1 - cy0 + 1) or 0
+end
+
 -- Hash:collect_overlapping over a packed hash: the cells' entries in the store, not the
 -- records (a record is a table of its own, its box in its array part: two or three
 -- cache lines apart per record, where the store holds a cell's boxes side by side), and
@@ -640,13 +654,8 @@ local function collect_packed(self, x0, y0, x1, y1, out, n)
   if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > self._n then
     return collect_kept(self, x0, y0, x1, y1, out, n, overlapping)
   end
-  -- only the cells with a slot can hold anything (comparisons: see Hash:axis_stop)
-  if cx0 < self._gx0 then cx0 = self._gx0 end
-  if cy0 < self._gy0 then cy0 = self._gy0 end
-  if cx1 > self._gx1 then cx1 = self._gx1 end
-  if cy1 > self._gy1 then cy1 = self._gy1 end
-  local columns = cx1 - cx0 + 1
-  local count = (columns > 0 and cy1 >= cy0) and columns * (cy1 - cy0 + 1) or 0
+  local columns, count
+  cx0, cy0, columns, count = slotted(self, cx0, cy0, cx1, cy1)
   local store, span = self._store, self._span
   local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local k, base, last, cx, cy = -1, 1, -5, 0, 0
@@ -918,14 +927,7 @@ function Hash:axis_stop(x0, y0, x1, y1, probe)
     local forward = probe.forward
     if probe.is_x then probe.face_slot, probe.cross_slot = forward and 1 or 3, 2
     else probe.face_slot, probe.cross_slot = forward and 2 or 4, 1 end
-    -- only the cells with a slot can hold anything (see regrid). Comparisons on every
-    -- interpreter: a NaN side leaves no cell to scan (LuaJIT's math.max(NaN, a) is a).
-    if cx0 < self._gx0 then cx0 = self._gx0 end
-    if cy0 < self._gy0 then cy0 = self._gy0 end
-    if cx1 > self._gx1 then cx1 = self._gx1 end
-    if cy1 > self._gy1 then cy1 = self._gy1 end
-    columns = cx1 - cx0 + 1
-    count = (columns > 0 and cy1 >= cy0) and columns * (cy1 - cy0 + 1) or 0
+    cx0, cy0, columns, count = slotted(self, cx0, cy0, cx1, cy1)
     probe.scan_cx0, probe.scan_cy0, probe.cell_size = cx0, cy0, size
     if BRANCH_FREE then
       local sign = forward and 1 or -1
