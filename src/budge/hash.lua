@@ -656,19 +656,14 @@ end
 -- scan's)), as consider_packed keeps a tie. (Its entries hold its own box, which lies in
 -- the box its cells were worked out from: a record that overlaps the rectangle strictly
 -- has an entry in every scanned cell the overlap meets with more than an edge, and that
--- cell is one.) A rectangle over more cells than the hash has records, or a big record,
--- is collect_kept's. One flat loop, as scan_packs (LuaJIT shaping: see there).
+-- cell is one.) The cells (cx0, cy0, columns, count) as slotted gives them;
+-- Hash:collect_overlapping leaves a rectangle over more cells than the hash has records to
+-- collect_kept, and adds the big records. One flat loop, as scan_packs (LuaJIT shaping:
+-- see there).
 -- Speed: budge.bump's moves (its items the world's actors, in a packed hash): see the
 -- CHANGELOG's entry "Faster budge.bump moves" (interleaved fresh runs, before and after).
-local function collect_packed(self, x0, y0, x1, y1, out, n)
+local function collect_packed(self, cx0, cy0, columns, count, x0, y0, x1, y1, out, n)
   local size = self.cell_size
-  local cx0, cy0 = floor(x0 / size), floor(y0 / size)
-  local cx1, cy1 = floor(x1 / size), floor(y1 / size)
-  if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > self._n then
-    return collect_kept(self, x0, y0, x1, y1, out, n, overlapping)
-  end
-  local columns, count
-  cx0, cy0, columns, count = slotted(self, cx0, cy0, cx1, cy1)
   local store, span = self._store, self._span
   local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local k, base, last, cx, cy = -1, 1, -5, 0, 0
@@ -691,8 +686,6 @@ local function collect_packed(self, x0, y0, x1, y1, out, n)
       base = base + 6
     end
   end
-  local big = self._big
-  if big[1] then return overlapping(big, self:next_stamp(), x0, y0, x1, y1, out, n) end
   return n
 end
 
@@ -702,15 +695,8 @@ end
 -- bench/instructions.lua --way bump_boxes --count 10000 --frames 5 --lua lua5.4`,
 -- 2026-12-05): 63940 instructions per move with the records' scan, 90229 with
 -- collect_packed's min and max, 75564 with this (and 71326 with find_entry).
-local function collect_packed_compared(self, x0, y0, x1, y1, out, n)
+local function collect_packed_compared(self, cx0, cy0, columns, count, x0, y0, x1, y1, out, n)
   local size = self.cell_size
-  local cx0, cy0 = floor(x0 / size), floor(y0 / size)
-  local cx1, cy1 = floor(x1 / size), floor(y1 / size)
-  if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > self._n then
-    return collect_kept(self, x0, y0, x1, y1, out, n, overlapping)
-  end
-  local columns, count
-  cx0, cy0, columns, count = slotted(self, cx0, cy0, cx1, cy1)
   local store, span = self._store, self._span
   local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   for k = 0, count - 1 do
@@ -731,8 +717,6 @@ local function collect_packed_compared(self, x0, y0, x1, y1, out, n)
       end
     end
   end
-  local big = self._big
-  if big[1] then return overlapping(big, self:next_stamp(), x0, y0, x1, y1, out, n) end
   return n
 end
 
@@ -752,7 +736,19 @@ local packed_collect = BRANCH_FREE and collect_packed or collect_packed_compared
 ---@param n integer how many entries of `out` to keep
 ---@return integer n
 function Hash:collect_overlapping(x0, y0, x1, y1, out, n)
-  if self._packed then return packed_collect(self, x0, y0, x1, y1, out, n) end
+  if self._packed then
+    local size = self.cell_size
+    local cx0, cy0 = floor(x0 / size), floor(y0 / size)
+    local cx1, cy1 = floor(x1 / size), floor(y1 / size)
+    if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) <= self._n then -- (else collect_kept's: see there)
+      local columns, count
+      cx0, cy0, columns, count = slotted(self, cx0, cy0, cx1, cy1)
+      n = packed_collect(self, cx0, cy0, columns, count, x0, y0, x1, y1, out, n)
+      local big = self._big
+      if big[1] then return overlapping(big, self:next_stamp(), x0, y0, x1, y1, out, n) end
+      return n
+    end
+  end
   return collect_kept(self, x0, y0, x1, y1, out, n, overlapping)
 end
 
