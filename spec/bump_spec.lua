@@ -310,6 +310,36 @@ describe("budge.bump", function()
       assert.same({0, 69}, xy(world:move("b", 0, 66))) -- (its move stays in that row)
     end)
 
+    it("moves an item over more than 4096 cells as one over a few (a second review)", function()
+      -- (the hash keeps such an item in a list of big ones, with no cells of its own: a
+      -- move of one raised "attempt to compare nil with number" after writing its new x)
+      local function script(cell_size)
+        local world = bump.newWorld(cell_size)
+        world:add("big", 0, 0, 100, 100) -- 101 x 101 cells of 1: big; of 64: 4
+        world:add("wall", 300, 0, 10, 300)
+        world:add("small", -40, 150, 10, 10)
+        local out = {}
+        local function log(x, y, cols, len)
+          out[#out + 1] = {x, y, len, len > 0 and cols[1].other or false}
+        end
+        log(world:move("big", 0.5, 0.5))
+        log(world:move("big", 260, 100)) -- stopped by the wall at 200
+        log(world:move("big", -300, 100)) -- back past where it began, onto small
+        log(world:move("small", 10, 150)) -- into big, from its left
+        out[#out + 1] = world:queryRect(-25, 150, 1, 1)
+        out[#out + 1] = {world:getRect("big")}
+        return out
+      end
+      local expected = script(64)
+      assert.same({0.5, 0.5, 0, false}, expected[1])
+      assert.same({200, 100, 1, "wall"}, expected[2])
+      assert.same({-30, 100, 1, "small"}, expected[3])
+      assert.same({-40, 150, 1, "big"}, expected[4])
+      assert.same({"big"}, expected[5])
+      assert.same({-30, 100, 100, 100}, expected[6])
+      assert.same(expected, script(1))
+    end)
+
     it("never ends a move inside another item, in 4000 moves on cell edges", function()
       -- items on a grid of 4 px in cells of 16: boxes on cell edges at every move; the
       -- oracle is every other item's box (an item that starts outside every other and

@@ -67,7 +67,8 @@ hash.SENTINEL = SENTINEL
 ---@field [10] integer cx1
 ---@field [11] integer cy1
 ---@field [12]? integer in a packed hash, the last column of its entries in the store (cx1,
----or cx1 - 1 when its right side is on cx1's low edge: see packed_end)
+---or cx1 - 1 when its right side is on cx1's low edge: see packed_end; a big record has
+---no entries, and this is the column they would end at)
 ---@field [13]? integer the last row of its entries there
 ---@field oneway? boolean blocks only moves down onto its top (read by Hash:axis_stop)
 ---@field removed? boolean taken out of its world while a move runs: scans skip it
@@ -333,6 +334,10 @@ function Hash:insert(record, x, y, width, height)
     local big = self._big
     local big_slot = #big + 1
     big[big_slot], record._big_slot = record, big_slot
+    if self._packed then -- (no entries, but the range they would have: budge.bump reads it)
+      record[12] = packed_end(cx0, x + width, self.cell_size)
+      record[13] = packed_end(cy0, y + height, self.cell_size)
+    end
     return
   end
   -- LuaJIT shaping: one flat loop over the cells (as in collect), not nested loops of one
