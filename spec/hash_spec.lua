@@ -108,8 +108,18 @@ local function check_packs(h)
     local kept = {}
     for _, rec in ipairs(cell) do
       local size = h.cell_size
-      local px1 = math.max(rec[8], math.ceil((rec[1] + rec[3]) / size) - 1)
-      local py1 = math.max(rec[9], math.ceil((rec[2] + rec[4]) / size) - 1)
+      -- (only with a power of two: there the division is exact, see packed_end)
+      local pow2 = size
+      while pow2 >= 2 do pow2 = pow2 / 2 end
+      while pow2 < 1 do pow2 = pow2 * 2 end
+      local function last_kept(c0, far)
+        local q = far / size
+        if pow2 == 1 and q == math.floor(q) and q ~= 0 then
+          return math.max(c0, q - 1)
+        end
+        return math.floor(q)
+      end
+      local px1, py1 = last_kept(rec[8], rec[1] + rec[3]), last_kept(rec[9], rec[2] + rec[4])
       assert.are.same({px1, py1}, {rec[12], rec[13]})
       if cx <= px1 and cy <= py1 then kept[#kept + 1] = rec end
     end

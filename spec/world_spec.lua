@@ -89,6 +89,29 @@ describe("world:add_solid, add_actor, remove, update, has", function()
     local out, n = world:query_point(505, 505)
     assert.same({1, solid}, {n, out[1]})
   end)
+
+  it("stops on a far side that divides by a cell size not a power of two to a whole number "
+    .. "(a hostile review)", function()
+    -- 124.10000000000001 / 7.3 and 124.09999999999999 / 7.3 both round to 17: the store
+    -- left the solid out of column 17, and the move back, whose reach is in it, passed
+    -- into the solid
+    local right, reach = 124.10000000000001, 124.09999999999999
+    for _, size in ipairs({7.3, 64}) do
+      local world = budge.new_world({cell_size = size})
+      world:add_solid(box(100, 0, right - 100, 10))
+      for i = 1, 40 do world:add_solid(box(1000 + 20 * i, 1000, 5, 5)) end -- (more than SMALL)
+      local actor = world:add_actor(box(200, 0, 10, 10))
+      local x, _, hits = world:move(actor, reach - 200, 0)
+      assert.same({right, 1}, {x, hits})
+    end
+    local bump = require("budge.bump")
+    local items = bump.newWorld(7.3)
+    items:add("wall", 100, 0, right - 100, 10)
+    for i = 1, 40 do items:add(i, 1000 + 20 * i, 1000, 5, 5) end
+    items:add("mover", 200, 0, 10, 10)
+    local x, _, _, len = items:move("mover", reach, 0)
+    assert.same({right, 1}, {x, len})
+  end)
 end)
 
 describe("world:add_tiles", function()

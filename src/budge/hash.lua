@@ -24,7 +24,7 @@
 local here = (...):match("^(.*)%.[^%.]+$")
 local sweep = require(here .. ".sweep")
 
-local floor, ceil, min, max = math.floor, math.ceil, math.min, math.max
+local floor, min, max = math.floor, math.min, math.max
 -- LuaJIT takes the branch-free forms of the scans (math.min compiles to no branch there);
 -- Lua 5.1-5.4 the ones with comparisons.
 local BRANCH_FREE = rawget(_G, "jit") ~= nil
@@ -86,6 +86,7 @@ hash.SENTINEL = SENTINEL
 ---@field package _n integer how many (#_all, kept as a field: `#` is a search on LuaJIT)
 ---@field package _big budge.HashRecord[] the records spanning more than BIG_CELLS cells
 ---@field package _packed boolean keeps a packed copy of its records' boxes (the store)
+---@field package _exact boolean its cell size is a power of two (see packed_end)
 ---@field package _store any[] packed hashes: every cell's packed boxes, in one array
 ---@field package _span table<integer, integer> for a cell's slot, at 2 * slot - 1 where its
 ---first entry in the store starts (its entries: see hash.new), at 2 * slot where its last
@@ -117,6 +118,14 @@ local BIG_CELLS = 4096
 -- Hash:axis_stop scans every record of a hash of at most this many instead of its cells.
 local SMALL = 8
 
+-- True when `size` is a power of two (see packed_end).
+local function power_of_two(size)
+  if not (size > 0 and size < math.huge) then return false end -- (checked by the callers)
+  while size >= 2 do size = size / 2 end
+  while size < 1 do size = size * 2 end
+  return size == 1
+end
+
 ---A new, empty hash. With `packed`, the hash keeps beside its cells a packed copy of
 ---their records' boxes, as inserted, which Hash:axis_stop reads instead of the records:
 ---the world's solids (world.lua), whose boxes change only by a remove and an insert, and
@@ -147,7 +156,7 @@ local SMALL = 8
 function hash.new(cell_size, packed)
   return setmetatable({cell_size = cell_size, _cells = {}, _stamp = 0,
     _all = {SENTINEL, SENTINEL}, _n = 0, _big = {}, _packed = packed == true,
-    _store = {}, _span = {}, _room = {}, _top = 0,
+    _exact = power_of_two(cell_size), _store = {}, _span = {}, _room = {}, _top = 0,
     _gx0 = 0, _gy0 = 0, _gx1 = -1, _gy1 = -1, _gw = 0, _cx = {}, _cy = {}}, Hash)
 end
 
@@ -254,9 +263,19 @@ end
 -- scene, 10000 actors). `luajit bench/world.lua --way W --count N`, 5 fresh runs each,
 -- interleaved with the tree before, 2026-12-04, medians in ns per move: box per tile
 -- 400 -> 390 at N = 100, 553 -> 503 at 10000; merged boxes 381 -> 364 and 538 -> 504.
-local function packed_end(c0, far, size)
-  return max(c0, ceil(far / size) - 1)
+-- Exactness: only with a cell size that is a power of two, where far / size is exact (a
+-- far side on the edge is then exactly c * size, and every number below it divides to
+-- less than c); else the cell that holds the far side, as the records' cells. With 7.3,
+-- a box whose right side was 124.10000000000001 (/ 7.3 rounds to 17) had no entry in
+-- column 17, and a move back from 200 to 124.09999999999999, whose reach divides to 17
+-- too, passed into it (found by a hostile review, 2026-12-05; spec/world_spec.lua).
+local function packed_end(c0, far, size, exact)
+  local q = far / size
+  local c = floor(q)
+  if exact and c == q and c ~= 0 and c * size == far then return max(c0, c - 1) end
+  return c
 end
+
 
 -- The slot of the cell (cx, cy) (the scans work it out the same way, from locals).
 local function slot_of(self, cx, cy)
@@ -335,8 +354,8 @@ function Hash:insert(record, x, y, width, height)
     local big_slot = #big + 1
     big[big_slot], record._big_slot = record, big_slot
     if self._packed then -- (no entries, but the range they would have: budge.bump reads it)
-      record[12] = packed_end(cx0, x + width, self.cell_size)
-      record[13] = packed_end(cy0, y + height, self.cell_size)
+      record[12] = packed_end(cx0, x + width, self.cell_size, self._exact)
+      record[13] = packed_end(cy0, y + height, self.cell_size, self._exact)
     end
     return
   end
@@ -352,7 +371,8 @@ function Hash:insert(record, x, y, width, height)
   end
   local columns = cx1 - cx0 + 1
   local right, bottom, oneway = x + width, y + height, record.oneway == true
-  local px1, py1 = packed_end(cx0, right, self.cell_size), packed_end(cy0, bottom, self.cell_size)
+  local size, exact = self.cell_size, self._exact
+  local px1, py1 = packed_end(cx0, right, size, exact), packed_end(cy0, bottom, size, exact)
   if packed then record[12], record[13] = px1, py1 end
   for k = 0, columns * (cy1 - cy0 + 1) - 1 do
     local row = floor(k / columns)
