@@ -276,7 +276,6 @@ local function packed_end(c0, far, size, exact)
   return c
 end
 
-
 -- The slot of the cell (cx, cy) (the scans work it out the same way, from locals).
 local function slot_of(self, cx, cy)
   return (cy - self._gy0) * self._gw + (cx - self._gx0) + 1
@@ -349,14 +348,15 @@ function Hash:insert(record, x, y, width, height)
   local slot = self._n + 1
   all[slot], record._slot, self._n = record, slot, slot
   all[slot + 1], all[slot + 2] = SENTINEL, SENTINEL
+  local right, bottom, oneway = x + width, y + height, record.oneway == true
+  local size, exact, packed = self.cell_size, self._exact, self._packed
+  local px1, py1 = packed_end(cx0, right, size, exact), packed_end(cy0, bottom, size, exact)
+  -- (a big record too: it has no entries, but budge.bump reads the range they would have)
+  if packed then record[12], record[13] = px1, py1 end
   if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > BIG_CELLS then
     local big = self._big
     local big_slot = #big + 1
     big[big_slot], record._big_slot = record, big_slot
-    if self._packed then -- (no entries, but the range they would have: budge.bump reads it)
-      record[12] = packed_end(cx0, x + width, self.cell_size, self._exact)
-      record[13] = packed_end(cy0, y + height, self.cell_size, self._exact)
-    end
     return
   end
   -- LuaJIT shaping: one flat loop over the cells (as in collect), not nested loops of one
@@ -365,15 +365,11 @@ function Hash:insert(record, x, y, width, height)
   -- 5 fresh runs) needed 398 KB of machine code instead of 434, flushing 3
   -- times instead of 4; make bench-jit's platformer 738 KB instead of 798 (medians of 5,
   -- 2026-12-01).
-  local cells, packed = self._cells, self._packed
+  local cells = self._cells
   if packed and (cx0 < self._gx0 or cy0 < self._gy0 or cx1 > self._gx1 or cy1 > self._gy1) then
     regrid(self, cx0, cy0, cx1, cy1)
   end
   local columns = cx1 - cx0 + 1
-  local right, bottom, oneway = x + width, y + height, record.oneway == true
-  local size, exact = self.cell_size, self._exact
-  local px1, py1 = packed_end(cx0, right, size, exact), packed_end(cy0, bottom, size, exact)
-  if packed then record[12], record[13] = px1, py1 end
   for k = 0, columns * (cy1 - cy0 + 1) - 1 do
     local row = floor(k / columns)
     local cx, cy = cx0 + (k - row * columns), cy0 + row
