@@ -599,6 +599,68 @@ describe("budge.bump", function()
       assert.same({0, y}, xy(world:move("q", 0, -20)))
     end)
 
+    it("stops on the nearer face when faces an ulp apart round to the same entry time",
+      function()
+      -- The case the review found: A's face is one ulp nearer than B's, both entry times
+      -- round to the same ti, and B's centre is nearer the mover's. The move stopped on
+      -- B's face, an ulp inside A, and reported only B (bump.lua stops on A).
+      local world = bump.newWorld(64)
+      world:add("A", 7.2999999999999989, -100, 10, 200)
+      world:add("B", 7.2999999999999998, -1, 10, 3)
+      local projected = world:project("M", 1.7300170957637223e-14, 0, 2.0929632175541313, 1,
+        102.2, 0)
+      assert.same({"A", "B"}, {projected[1].other, projected[2].other})
+      assert.equal(projected[1].ti, projected[2].ti) -- (the tie)
+      world:add("M", 1.7300170957637223e-14, 0, 2.0929632175541313, 1)
+      local x, y, cols, len = world:move("M", 102.2, 0)
+      assert.same({5.2070367824458677, 0, 1, "A"}, {x, y, len, cols[1].other})
+      assert.equal(0, select(4, world:check("M", x, y)))
+      -- Oracle, on both axes and both directions: walls A (long, its centre far from the
+      -- mover's) and B (short, its centre on the mover's line) 1 to 3 ulps apart, the mover
+      -- sliding through both: the first col is the wall whose face is nearer along the
+      -- move (B when they round to one face), and the move ends inside neither.
+      local aim = require("fixtures.aim")
+      local rng = random_source.new(20261206)
+      local ties = 0
+      for case = 1, 2000 do
+        local is_x, forward = case % 2 == 0, case % 4 < 2
+        local size = 1 + rng(0, 40000) / 997
+        local a_at = rng(1000, 60000) / 997
+        local b_at = aim.nudge(a_at, rng(1, 3) * (forward and 1 or -1))
+        local gap = 1 + rng(0, 90000) / 1009
+        local start = forward and a_at - size - gap or a_at + 10 + gap
+        local delta = (gap + 20 + rng(0, 1000) / 7) * (forward and 1 or -1)
+        local a_face, b_face = a_at, b_at
+        if not forward then a_face, b_face = a_at + 10, b_at + 10 end
+        local nearer = "B"
+        if a_face ~= b_face and (a_face < b_face) == forward then nearer = "A" end
+        local function rect(along, along_size, across, across_size)
+          if is_x then return along, across, along_size, across_size end
+          return across, along, across_size, along_size
+        end
+        local walls = {A = {rect(a_at, 10, -100, 200)}, B = {rect(b_at, 10, -1, 3)}}
+        world = bump.newWorld(64)
+        for _, name in ipairs({"A", "B"}) do
+          local r = walls[name]
+          world:add(name, r[1], r[2], r[3], r[4])
+        end
+        local mx, my, mw, mh = rect(start, size, 0, 1)
+        local gx, gy = rect(start + delta, size, 0, 1)
+        projected = world:project("P", mx, my, mw, mh, gx, gy)
+        if projected[1].ti == projected[2].ti then ties = ties + 1 end
+        world:add("M", mx, my, mw, mh)
+        x, y, cols = world:move("M", gx, gy)
+        local message = ("case %d: ends at %.17g, %.17g"):format(case, x, y)
+        assert.same({nearer, nearer}, {cols[1].other, projected[1].other}, message)
+        for _, name in ipairs({"A", "B"}) do
+          local r = walls[name]
+          assert.is_false(x < r[1] + r[3] and r[1] < x + mw and y < r[2] + r[4] and r[2] < y + mh,
+            message .. " inside " .. name)
+        end
+      end
+      assert.is_true(ties > 300, "ties " .. ties)
+    end)
+
     it("lets a filter of project and of every query query and project the world", function()
       local world = bump.newWorld(16)
       for i = 1, 6 do world:add("b" .. i, i * 20, 0, 10, 10) end

@@ -557,9 +557,34 @@ local function response_of(self, answer, other)
   return response
 end
 
--- True when record b comes before record a met at the same time: its centre nearer the
--- centre of the box (x, y, w, h), or as near and added earlier.
-local function centre_before(b, a, x, y, w, h)
+-- The axis (1: x, 2: y) across which the box (x, y, w, h) moving by (dx, dy) enters
+-- `record`: the later of its entry times on each axis (y when as late), as in nearest.
+local function entered_across(record, x, y, w, h, dx, dy)
+  local rx, ry = record[1], record[2]
+  local enter_x = min((rx - (x + w)) / dx, (rx + record[3] - x) / dx)
+  local enter_y = min((ry - (y + h)) / dy, (ry + record[4] - y) / dy)
+  if enter_x > enter_y then return 1 end
+  return 2
+end
+
+-- True when record b comes before record a met at the same time t (a leg time; negative
+-- for an overlap at the start): first the one whose face is nearer along the move, when
+-- both are entered across the same axis (their times can round to the same t with faces
+-- apart, and the move stops on the face of the one chosen: the other's, nearer, would be
+-- an ulp inside); then the one whose centre is nearer the centre of the box (x, y, w,
+-- h), or as near and added earlier.
+local function comes_before(b, a, t, x, y, w, h, dx, dy)
+  if t >= 0 then
+    local axis = entered_across(b, x, y, w, h, dx, dy)
+    if axis == entered_across(a, x, y, w, h, dx, dy) then
+      local fb, fa
+      if axis == 1 then
+        if dx > 0 then fb, fa = -b[1], -a[1] else fb, fa = b[1] + b[3], a[1] + a[3] end
+      elseif dy > 0 then fb, fa = -b[2], -a[2]
+      else fb, fa = b[2] + b[4], a[2] + a[4] end
+      if fb ~= fa then return fb > fa end
+    end
+  end
   local da = square_distance(x, y, w, h, a[1], a[2], a[3], a[4])
   local db = square_distance(x, y, w, h, b[1], b[2], b[3], b[4])
   return db < da or db == da and b.id < a.id
@@ -568,8 +593,8 @@ end
 -- The candidate `record`, met at leg time `first` (no later than the best so far),
 -- becomes the leg's best unless the best so far comes before it.
 local function offer(self, record, first)
-  if first == self._best_t
-    and not centre_before(record, self._best, self._leg_x, self._leg_y, self._w, self._h) then
+  if first == self._best_t and not comes_before(record, self._best, first, self._leg_x,
+    self._leg_y, self._w, self._h, self._leg_dx, self._leg_dy) then
     return
   end
   self._best, self._best_t = record, first
@@ -641,7 +666,8 @@ local function nearest_compared(self)
         if first < 0 then
           first = overlap_ti(x, y, w, h, rx, ry, record[3], record[4])
         end
-        if first < best_t or first == best_t and centre_before(record, best, x, y, w, h) then
+        if first < best_t
+          or first == best_t and comes_before(record, best, first, x, y, w, h, dx, dy) then
           best, best_t = record, first
           if enter_x > enter_y then best_axis = 1 else best_axis = 2 end
         end
@@ -654,8 +680,9 @@ end
 -- The first thing the running leg (run_leg wrote it into self._leg_x and the fields after
 -- it) meets that the move has not met or passed over yet: its record, the leg time (an
 -- overlap at the start: minus its area, so the deepest first) and the axis it is entered
--- across (1: x, 2: y; budge's corner rule: y when both at once), or nil. Ties go by the
--- distance between centres, then by the order items were added. Entry and exit times are
+-- across (1: x, 2: y; budge's corner rule: y when both at once), or nil. Ties go by
+-- comes_before: the face nearer along the leg, the distance between centres, the order
+-- items were added. Entry and exit times are
 -- sweep.box_enter's (the same roundings); with no motion on an axis, the rectangle test
 -- made it overlap on that axis.
 -- LuaJIT shaping: one pass for the nearest, asked again only past what the filter lets
@@ -965,12 +992,23 @@ function World:move(item, goal_x, goal_y, filter)
   return x, y, self._move_cols, n
 end
 
--- Inserts col (at n of list) into place by ti, then by the distance between the item's
--- and the other's centres (bump's order), then the order they came in (query order:
--- the order items were added). Stable.
+-- Inserts col (at n of list) into place by ti; at the same ti (not an overlap), the one
+-- whose face is nearer along the move when both are entered across the same face (a
+-- move's tie rule, comes_before); then by the distance between the item's and the
+-- other's centres (bump's order), then the order they came in (query order: the order
+-- items were added). Stable.
 local function col_before(a, b)
   if a.ti ~= b.ti then return a.ti < b.ti end
   local ir, ar, br = a.itemRect, a.otherRect, b.otherRect
+  local an, bn = a.normal, b.normal
+  if a.ti >= 0 and an.x == bn.x and an.y == bn.y then
+    local fa, fb -- (the faces, negated where the nearer is the smaller)
+    if an.x < 0 then fa, fb = -ar.x, -br.x
+    elseif an.x > 0 then fa, fb = ar.x + ar.w, br.x + br.w
+    elseif an.y < 0 then fa, fb = -ar.y, -br.y
+    else fa, fb = ar.y + ar.h, br.y + br.h end
+    if fa ~= fb then return fa > fb end
+  end
   return square_distance(ir.x, ir.y, ir.w, ir.h, ar.x, ar.y, ar.w, ar.h)
     < square_distance(ir.x, ir.y, ir.w, ir.h, br.x, br.y, br.w, br.h)
 end
