@@ -858,6 +858,16 @@ describe("budge.bump", function()
         end, "call it as world:add%(...%), with a colon, got a table for the world"},
         {function() world:addResponse("x", 3) end, "response must be a function, got 3"},
         {function() world:getRect({}) end, "item must be an item of this world"},
+        -- (move's and check's goal and filter: one test first, these errors when it fails)
+        {function() world:check("a", 1, "5") end, "goalY must be a finite number, got \"5\""},
+        {function() world:move("a", math.huge, 0) end, "goalX must be a finite number, got inf"},
+        {function() world:check("a", 0, -math.huge) end,
+          "goalY must be a finite number, got %-inf"},
+        {function() world:move("a", 0, 2 ^ 40) end, "goalY must keep the item within this "
+          .. "world's range, %-1073741824 to 1073741824 %(2%^24 cells of 64 px, at most 2%^40 "
+          .. "px%), got 1099511627776"},
+        {function() world:check("a", 0, 0, {}) end,
+          "filter must be a function or nil, got a table"},
       }
       world:add("b", 15, 0, 10, 10)
       for i, case in ipairs(cases) do

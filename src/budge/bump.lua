@@ -568,15 +568,16 @@ local function entered_across(record, x, y, w, h, dx, dy)
 end
 
 -- True when record b comes before record a met at the same time t (a leg time; negative
--- for an overlap at the start): first the one whose face is nearer along the move, when
--- both are entered across the same axis (their times can round to the same t with faces
--- apart, and the move stops on the face of the one chosen: the other's, nearer, would be
--- an ulp inside); then the one whose centre is nearer the centre of the box (x, y, w,
--- h), or as near and added earlier.
-local function comes_before(b, a, t, x, y, w, h, dx, dy)
+-- for an overlap at the start), b entered across axis_b and a across axis_a (see
+-- entered_across): first the one whose face is nearer along the move, when both are
+-- entered across the same axis (their times can round to the same t with faces apart,
+-- and the move stops on the face of the one chosen: the other's, nearer, would be an ulp
+-- inside); then the one whose centre is nearer the centre of the box (x, y, w, h), or as
+-- near and added earlier.
+local function comes_before(b, a, t, axis_b, axis_a, x, y, w, h, dx, dy)
   if t >= 0 then
-    local axis = entered_across(b, x, y, w, h, dx, dy)
-    if axis == entered_across(a, x, y, w, h, dx, dy) then
+    local axis = axis_b
+    if axis == axis_a then
       local fb, fa
       if axis == 1 then
         if dx > 0 then fb, fa = -b[1], -a[1] else fb, fa = b[1] + b[3], a[1] + a[3] end
@@ -593,9 +594,13 @@ end
 -- The candidate `record`, met at leg time `first` (no later than the best so far),
 -- becomes the leg's best unless the best so far comes before it.
 local function offer(self, record, first)
-  if first == self._best_t and not comes_before(record, self._best, first, self._leg_x,
-    self._leg_y, self._w, self._h, self._leg_dx, self._leg_dy) then
-    return
+  if first == self._best_t then
+    local best, x, y, w, h = self._best, self._leg_x, self._leg_y, self._w, self._h
+    local dx, dy = self._leg_dx, self._leg_dy
+    if not comes_before(record, best, first, entered_across(record, x, y, w, h, dx, dy),
+      entered_across(best, x, y, w, h, dx, dy), x, y, w, h, dx, dy) then
+      return
+    end
   end
   self._best, self._best_t = record, first
 end
@@ -666,10 +671,10 @@ local function nearest_compared(self)
         if first < 0 then
           first = overlap_ti(x, y, w, h, rx, ry, record[3], record[4])
         end
-        if first < best_t
-          or first == best_t and comes_before(record, best, first, x, y, w, h, dx, dy) then
-          best, best_t = record, first
-          if enter_x > enter_y then best_axis = 1 else best_axis = 2 end
+        local axis = enter_x > enter_y and 1 or 2
+        if first < best_t or first == best_t
+          and comes_before(record, best, first, axis, best_axis, x, y, w, h, dx, dy) then
+          best, best_t, best_axis = record, first, axis
         end
       end
     end
@@ -925,12 +930,27 @@ function plan_move(self, proxy, goal_x, goal_y, filter, list, pool)
   return x, y, n
 end
 
--- The goal of a move or a check: finite, and keeping the item within the world's range.
-local function check_goal(self, proxy, goal_x, goal_y)
+-- The errors of a move's or a check's goal (finite, and keeping the item within the
+-- world's range) and filter, at the caller of world:move or world:check: called when
+-- goal_ok fails.
+local function check_goal(self, proxy, goal_x, goal_y, filter)
   check_finite(goal_x, "goalX", 4)
   check_finite(goal_y, "goalY", 4)
   check_span(self._world, goal_x, proxy.width, "goalX", "the item", 4)
   check_span(self._world, goal_y, proxy.height, "goalY", "the item", 4)
+  check_filter(filter, 3)
+end
+
+-- True when a move's goal is two numbers keeping the item within the world's range (then
+-- finite: a NaN or an infinity fails a comparison) and its filter is nil or a function:
+-- check_goal's tests in one expression, for it runs on every move. Through check_goal's
+-- calls, `lua5.4 bench/world.lua --way bump_boxes --count 1000 --frames 60` spent 6.5% of
+-- its time in them (a sampling profile, 2026-12-06).
+local function goal_ok(self, proxy, goal_x, goal_y, filter)
+  local range = self._world.range
+  return type(goal_x) == "number" and type(goal_y) == "number" and goal_x >= -range
+    and goal_x + proxy.width <= range and goal_y >= -range and goal_y + proxy.height <= range
+    and (filter == nil or type(filter) == "function")
 end
 
 ---world:check(item, goalX, goalY, filter): where the item would end moving toward the
@@ -944,8 +964,9 @@ end
 function World:check(item, goal_x, goal_y, filter)
   enter(self, "check")
   local proxy = find_proxy(self, item)
-  check_goal(self, proxy, goal_x, goal_y)
-  check_filter(filter, 2)
+  if not goal_ok(self, proxy, goal_x, goal_y, filter) then
+    check_goal(self, proxy, goal_x, goal_y, filter)
+  end
   local x, y, n = plan_move(self, proxy, goal_x, goal_y, filter, self._check_cols,
     self._check_pool)
   return x, y, self._check_cols, n
@@ -963,8 +984,9 @@ end
 function World:move(item, goal_x, goal_y, filter)
   enter(self, "move")
   local proxy = find_proxy(self, item)
-  check_goal(self, proxy, goal_x, goal_y)
-  check_filter(filter, 2)
+  if not goal_ok(self, proxy, goal_x, goal_y, filter) then
+    check_goal(self, proxy, goal_x, goal_y, filter)
+  end
   local x, y, n = plan_move(self, proxy, goal_x, goal_y, filter, self._move_cols,
     self._move_pool)
   if x ~= proxy.x or y ~= proxy.y then
