@@ -71,7 +71,8 @@ hash.SENTINEL = SENTINEL
 ---no entries, and this is the column they would end at)
 ---@field [13]? integer the last row of its entries there
 ---@field oneway? boolean blocks only moves down onto its top (read by Hash:axis_stop)
----@field removed? boolean taken out of its world while a move runs: scans skip it
+---@field removed? boolean taken out of its world while a move runs: scans skip it (a packed
+---hash's scans by its entries, which its owner empties then: solids.retire)
 ---@field package _stamp integer the last scan that visited it (written by the hash)
 ---@field package _slot integer its place in the hash's list of all records
 ---@field package _big_slot? integer its place in the list of big records, when it is one
@@ -865,8 +866,9 @@ end
 -- cost (a search of the touch list would cost its length at every tie).
 local function consider_packed(probe, pack, base, face, cx, cy)
   local stop = stop_at(probe, face, pack[base + 5])
+  if stop == nil then return end -- (a solid removed during the move: no entry passes the
+  -- scan's test, solids.retire emptied them; the record is not read here)
   local record = pack[base + 6]
-  if stop == nil or record.removed then return end
   local touched = probe.touched
   if stop ~= probe.best then
     probe.best = stop

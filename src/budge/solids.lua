@@ -14,7 +14,7 @@ local hits = require(here .. ".hits")
 local actors = require(here .. ".actors")
 
 local clip_axis = sweep.clip_axis
-local min = math.min
+local min, HUGE = math.min, math.huge
 local BRANCH_FREE = rawget(_G, "jit") ~= nil -- (hash.lua says why: LuaJIT only)
 local gather_layer = layer.gather
 local SLIDE, CROSS = hits.SLIDE, hits.CROSS
@@ -66,6 +66,18 @@ function solids.unhash(world, record)
     world._solids:remove(record)
     record._in_hash = false
   end
+end
+
+---Writes an empty box (from +inf to -inf) over a solid's copies in the packed hash when
+---it is removed while a move runs (world:remove only marks it then; solids.unhash takes
+---them out after): no scan of the store meets it again, and the scans need not read the
+---record to skip it. `luajit bench/world.lua --way boxes --count 10000`, 5 fresh runs
+---each, interleaved, 2026-12-06: 521 ns per move with that read (record.removed, a
+---cache line of its own per candidate) and 482 without it.
+---@param world budge.World
+---@param record budge.Record
+function solids.retire(world, record)
+  if record._in_hash then world._solids:repack(record, HUGE, HUGE, -HUGE, -HUGE) end
 end
 
 ---Appends a tile layer to the world's list and grows the bounds.

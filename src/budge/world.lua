@@ -291,6 +291,7 @@ function World:remove(item)
   if kind == SOLID then self._solid_count = self._solid_count - 1
   elseif kind == SENSOR then self._sensor_count = self._sensor_count - 1 end
   if self._busy then -- a move is walking the structures: take it out when it is done
+    if kind == SOLID then solids.retire(self, record) end
     local n = self._n_pending + 1
     self._pending[n] = record
     self._n_pending = n
