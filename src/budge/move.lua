@@ -263,9 +263,9 @@ local function phase_stop(world, probe)
       local touch, pos = probe.touch, probe.pos
       local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
       for c = 1, probe.touched do
-        local record = touch[c]
-        add_hit(world, record.item, side, nil, nil, probe.touch_top[c], probe.touch_left[c],
-          record.id, SLIDE, t)
+        local record = touch[c] -- (its item and id from the array part: budge.Record)
+        add_hit(world, record[7], side, nil, nil, probe.touch_top[c], probe.touch_left[c],
+          record[6], SLIDE, t)
       end
       probe.sources = probe.sources + probe.touched
     end

@@ -60,7 +60,7 @@ local world = {}
 ---@class budge.Record : budge.HashRecord
 ---@field item table the user's box, or the tile layer handle
 ---@field [5] "solid"|"actor"|"sensor"|"tiles" its kind
----@field [6] false unused (an actor's moved mark is the world's, by slot: actors.lua)
+---@field [6] integer the id again, in the array part: a move's hit with a box reads it
 ---@field [7] any the item again, for scans that report it (budge.bump: the game's item)
 ---@field id integer the order it was added (the last tie-breaker everywhere)
 ---@field oneway boolean a solid with wall_type "oneway"
@@ -200,8 +200,11 @@ end
 local function new_record(self, item, kind)
   local id = self._next_id + 1
   self._next_id = id
-  -- the array part (budge.Record, budge.HashRecord): the box, kind, moved, item, cells
-  local record = {0, 0, 0, 0, kind, false, item, 0, 0, 0, 0,
+  -- the array part (budge.Record, budge.HashRecord): the box, kind, id, item, cells, the
+  -- packed cells' last column and row (made here, so that the array part never grows:
+  -- LuaJIT keeps an array part of up to 15 slots made by the constructor beside the
+  -- table's header, where a move's hit reads [6] and [7])
+  local record = {0, 0, 0, 0, kind, id, item, 0, 0, 0, 0, 0, 0,
     item = item, id = id, oneway = false, _stamp = 0}
   self._records[item] = record
   return record
