@@ -46,6 +46,10 @@ local bump = {
 -- 2^53 / 2^20 moves). A move of more than 2^19 legs (each meets a new item) would reach
 -- MET: far beyond any scene.
 local MET, MARK_SPAN = 2 ^ 19, 2 ^ 20
+-- Where a record keeps its mark: in its array part, beside its box (budge.Record's [14]:
+-- the narrow phase's loop reads the box and the mark of each candidate from one run of
+-- memory, not the mark from the record's hash part as well).
+local MARK = 14
 
 -- rect helpers (bump.rect) ---------------------------------------------------------
 
@@ -274,7 +278,7 @@ local ENGINE = {[touch_response] = "touch", [cross_response] = "cross",
 ---@field package _list table[] the proxies, unordered (a removal moves the last into the gap)
 ---@field package _filter? function the running move's filter (nil: "slide" on everything)
 ---@field package _running boolean a move or check is running (its callbacks may be called)
----@field package _stamp number where the running move's marks begin (records' _mark):
+---@field package _stamp number where the running move's marks begin (records' marks, [MARK]):
 ---_stamp + leg for one its leg's filter ignored, _stamp + MET for one it met (and its item)
 ---@field package _pass number _stamp + the running leg's number
 ---@field package _margin number how far a moved item's cells reach beyond its box
@@ -436,7 +440,7 @@ function bump.newWorld(cell_size)
   local records = self._world._records
   self._visited_filter = function(item, other)
     local proxy = self._proxies[other]
-    if proxy and records[proxy]._mark >= self._stamp + MET then return false end
+    if proxy and records[proxy][MARK] >= self._stamp + MET then return false end
     local filter = self._filter
     if filter == nil then return "slide" end
     return filter(item, other)
@@ -490,7 +494,7 @@ function World:add(item, x, y, w, h)
   list[index] = proxy
   proxy._index = index
   local record = self._world._records[proxy]
-  record._mark = 0
+  record[MARK] = 0
   record[7] = item -- (what a col reports: read with the box, not through the proxy)
   proxy._record = record -- (a move reads it here, not from the world's table of records)
   self._proxies[item] = proxy
@@ -655,7 +659,7 @@ local function nearest_compared(self)
     local record = region[i]
     local rx, ry = record[1], record[2]
     if rx < right and left < rx + record[3] and ry < bottom and top < ry + record[4]
-      and record._mark < pass then
+      and record[MARK] < pass then
       local near_x, far_x = (rx - x1) / dx, (rx + record[3] - x) / dx
       local near_y, far_y = (ry - y1) / dy, (ry + record[4] - y) / dy
       local enter_x, enter_y = min(near_x, far_x), min(near_y, far_y)
@@ -720,7 +724,7 @@ local function nearest(self)
     local record = region[i]
     local rx, ry = record[1], record[2]
     if min(self._leg_right - rx, rx + record[3] - self._leg_left, self._leg_bottom - ry,
-      ry + record[4] - self._leg_top, self._pass - record._mark) > 0 then
+      ry + record[4] - self._leg_top, self._pass - record[MARK]) > 0 then
       local near_x, far_x, near_y, far_y = leg_times(self, record)
       -- (+ 0: -0 becomes 0, for math.max gives either zero on a tie, by interpreter)
       local first = max(min(near_x, far_x), min(near_y, far_y)) + 0
@@ -806,11 +810,11 @@ local function meet(self, other, t, axis, x, y, goal_x, goal_y)
   local answer = "slide"
   if filter ~= nil then answer = filter(item, other[7]) end
   if not answer then
-    other._mark = self._pass -- ignored: passed over for the rest of this leg
+    other[MARK] = self._pass -- ignored: passed over for the rest of this leg
     return nil
   end
   local response = response_of(self, answer, other[7])
-  other._mark = self._stamp + MET
+  other[MARK] = self._stamp + MET
   local n = self._n + 1
   self._n = n
   local col = fill_col(col_at(self._out, self._out_pool, n), item, other, answer, t,
@@ -904,7 +908,7 @@ function plan_move(self, proxy, goal_x, goal_y, filter, list, pool)
   -- comparison in the narrow phase's loop.
   self._stamp = self._stamp + MARK_SPAN
   self._pass = self._stamp
-  own._mark = self._stamp + MET
+  own[MARK] = self._stamp + MET
   self._item, self._w, self._h = proxy.item, proxy.width, proxy.height
   self._filter, self._out, self._out_pool = filter, list, pool
   self._n = 0

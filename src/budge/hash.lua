@@ -43,8 +43,9 @@ local hash = {}
 -- at the default one (medians of 9, fresh runs interleaved, 2026-12-03); the example
 -- game (`bench/game.lua --way default`, 5 runs) 33.6 -> 29.6 us per frame, 287 -> 261
 -- KB. Lua 5.1-5.4 read n records (PAD 0). budge.bump's nearest does the same.
--- (budge.bump's nearest pads its region with the same record: its mark is +inf too)
-local SENTINEL = {math.huge, math.huge, 0, 0, _stamp = 0, _mark = math.huge}
+-- (budge.bump's nearest pads its region with the same record: its mark, [14], is +inf)
+local SENTINEL = {math.huge, math.huge, 0, 0, false, 0, false, 0, 0, 0, 0, 0, 0, math.huge,
+  _stamp = 0}
 local PAD = BRANCH_FREE and 2 or 0
 hash.SENTINEL = SENTINEL
 

@@ -62,6 +62,7 @@ local world = {}
 ---@field [5] "solid"|"actor"|"sensor"|"tiles" its kind
 ---@field [6] integer the id again, in the array part: a move's hit with a box reads it
 ---@field [7] any the item again, for scans that report it (budge.bump: the game's item)
+---@field [14] number budge.bump's mark of its item (bump.lua's plan_move), else 0
 ---@field id integer the order it was added (the last tie-breaker everywhere)
 ---@field oneway boolean a solid with wall_type "oneway"
 ---@field index? integer an actor's place in the actor list (a sensor's in the sensor list)
@@ -201,10 +202,10 @@ local function new_record(self, item, kind)
   local id = self._next_id + 1
   self._next_id = id
   -- the array part (budge.Record, budge.HashRecord): the box, kind, id, item, cells, the
-  -- packed cells' last column and row (made here, so that the array part never grows:
-  -- LuaJIT keeps an array part of up to 15 slots made by the constructor beside the
-  -- table's header, where a move's hit reads [6] and [7])
-  local record = {0, 0, 0, 0, kind, id, item, 0, 0, 0, 0, 0, 0,
+  -- packed cells' last column and row, budge.bump's mark (made here, so that the array
+  -- part never grows: LuaJIT keeps an array part of up to 15 slots made by the
+  -- constructor beside the table's header, where a move's hit reads [6] and [7])
+  local record = {0, 0, 0, 0, kind, id, item, 0, 0, 0, 0, 0, 0, 0,
     item = item, id = id, oneway = false, _stamp = 0}
   self._records[item] = record
   return record
