@@ -661,6 +661,91 @@ describe("budge.bump", function()
       assert.is_true(ties > 300, "ties " .. ties)
     end)
 
+    it("stops outside both a wall and a ceiling met at the same rounded time across axes",
+      function()
+      -- A review's case: moving up and left, the mover meets wall A across x and ceiling B
+      -- across y at one rounded ti. The stop on A's face had y = y + dy * ti, an ulp above
+      -- B's bottom: a touch ended inside B unreported, and a slide's next leg started inside
+      -- B and was let out through it, 25.7 px up (ending at y = -158.18...).
+      local function scene()
+        local world = bump.newWorld(64)
+        world:add("A", -172.1642438057483, -359.10233629483383, 120, 800)
+        world:add("B", -52.164243805748292, -67.238094203920497, 421.66666666666669,
+          25.714285714285715)
+        world:add("M", -10.086223984142716, 11.230997038499506, 27.054162487462388,
+          25.623871614844532)
+        return world
+      end
+      for _, response in ipairs({"touch", "slide"}) do
+        local world = scene()
+        local x, y, cols, len = world:move("M", -145.21280475718532, -158.18230997038498,
+          function() return response end)
+        local names = {}
+        for i = 1, len do names[i] = cols[i].other end
+        assert.same({-52.164243805748299, -41.523808489634781}, {x, y}, response)
+        assert.same(response == "touch" and {"A"} or {"A", "B"}, names)
+        assert.equal(0, select(4, world:check("M", x, y)))
+      end
+      -- Oracle: a wall and a slab meeting at a corner, their faces nudged by ulps until the
+      -- rounded entry times into both are equal; the move, touching or sliding, ends inside
+      -- neither.
+      local aim = require("fixtures.aim")
+      local rng = random_source.new(20261207)
+      local ties = 0
+      for case = 1, 2000 do
+        local mw, mh = 1 + rng(0, 40000) / 997, 1 + rng(0, 40000) / 997
+        local mx, my = rng(-30000, 30000) / 1009, rng(-30000, 30000) / 1013
+        local sx, sy = rng(1, 2) == 1 and 1 or -1, rng(1, 2) == 1 and 1 or -1
+        local dx, dy = sx * (1 + rng(0, 90000) / 1009), sy * (1 + rng(0, 90000) / 1013)
+        local t = rng(1, 999) / 2000
+        local goal_x, goal_y = mx + 2 * dx, my + 2 * dy
+        dx, dy = goal_x - mx, goal_y - my -- (the move's own deltas: its times use these)
+        local x1, y1 = mx + mw, my + mh
+        local function a_rect(f) -- (the wall, its face on the mover's side at f)
+          if sx > 0 then return {f, my - 400, 50, 800} end
+          return {f - 50, my - 400, 50, 800}
+        end
+        local function b_rect(f) -- (the slab, reaching the wall's face across x)
+          local x = sx > 0 and a_rect(f[1])[1] - 400 or a_rect(f[1])[1] + 50
+          if sy > 0 then return {x, f[2], 400, 30} end
+          return {x, f[2] - 30, 400, 30}
+        end
+        local function times(fa, fb) -- the rounded times of entry into each, as a move has
+          local a, b = a_rect(fa), b_rect({fa, fb})
+          local ta = sx > 0 and (a[1] - x1) / dx or (a[1] + a[3] - mx) / dx
+          local tb = sy > 0 and (b[2] - y1) / dy or (b[2] + b[4] - my) / dy
+          return ta, tb
+        end
+        local ax = (sx > 0 and x1 or mx) + dx * t
+        local by = (sy > 0 and y1 or my) + dy * t
+        local found
+        for i = -3, 3 do
+          for j = -40, 40 do
+            local ta, tb = times(aim.nudge(ax, i), aim.nudge(by, j))
+            if not found and ta == tb then found = {aim.nudge(ax, i), aim.nudge(by, j)} end
+          end
+        end
+        if found then
+          ties = ties + 1
+          local walls = {A = a_rect(found[1]), B = b_rect(found)}
+          local world = bump.newWorld(case % 2 == 0 and 64 or 7.3)
+          for _, name in ipairs({"A", "B"}) do
+            local r = walls[name]
+            world:add(name, r[1], r[2], r[3], r[4])
+          end
+          world:add("M", mx, my, mw, mh)
+          local response = case % 3 == 0 and "touch" or "slide"
+          local x, y = world:move("M", goal_x, goal_y, function() return response end)
+          for _, name in ipairs({"A", "B"}) do
+            local r = walls[name]
+            assert.is_false(x < r[1] + r[3] and r[1] < x + mw and y < r[2] + r[4] and r[2] < y + mh,
+              ("case %d: %s ends at %.17g, %.17g inside %s"):format(case, response, x, y, name))
+          end
+        end
+      end
+      assert.is_true(ties > 1000, "ties " .. ties)
+    end)
+
     it("lets a filter of project and of every query query and project the world", function()
       local world = bump.newWorld(16)
       for i = 1, 6 do world:add("b" .. i, i * 20, 0, 10, 10) end
