@@ -1,6 +1,7 @@
 -- What a hostile tester found, each pinned at the case that showed it: grids read wrong,
 -- calls that never ended, results that were wrong.
 local budge = require("budge")
+local bump = require("budge.bump")
 local box = require("fixtures.box")
 
 local function position(world, actor, dx, dy, method)
@@ -502,6 +503,33 @@ describe("the world's range", function()
       "x must keep the rectangle within this world's range, -1073741824 to 1073741824 (2^24 "
       .. "cells of 64 px, at most 2^40 px), got 1e+300")
     assert.equal(2 ^ 40, budge.new_world({cell_size = 2 ^ 20}).range)
+  end)
+
+  it("refuses integer moves that wrap around on Lua 5.3+", function()
+    -- (math.maxinteger - 5 + 10 wraps to a negative integer: the far side alone passed)
+    local huge = rawget(math, "maxinteger")
+    if huge == nil then return end -- (Lua 5.1, 5.2 and LuaJIT: numbers do not wrap)
+    local function message(what) -- (a Lua pattern)
+      return "must keep the " .. what .. " within this world's range, %-1073741824 to "
+        .. "1073741824 %(2%^24 cells of 64 px, at most 2%^40 px%), got 9.2233720368548e%+18$"
+    end
+    local world = budge.new_world()
+    local actor = world:add_actor(box(0, 0, 10, 10))
+    local ok, err = pcall(world.move, world, actor, huge - 5, 0)
+    assert.is_false(ok)
+    assert.matches("dx " .. message("actor"), err)
+    ok, err = pcall(world.add_solid, world, box(huge - 5, 0, 10, 10))
+    assert.is_false(ok)
+    assert.matches("box.x " .. message("box"), err)
+    local front = bump.newWorld()
+    front:add("a", 0, 0, 10, 10)
+    ok, err = pcall(front.move, front, "a", huge - 5, 0)
+    assert.is_false(ok)
+    assert.matches("goalX " .. message("item"), err)
+    ok, err = pcall(front.check, front, "a", 0, huge - 5)
+    assert.is_false(ok)
+    assert.matches("goalY " .. message("item"), err)
+    assert.same({0, 0, 0, 0, 10, 10}, {actor.x, actor.y, front:getRect("a")})
   end)
 
   it("does bounded work for huge boxes, tiny cells and rectangles over the whole range", function()

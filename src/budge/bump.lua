@@ -799,8 +799,8 @@ local function custom_response(self, name, col, w, h, goal_x, goal_y)
   local new_x, new_y, cols, len = self.responses[name](self, col, self._x0, self._y0, w, h,
     goal_x, goal_y, self._visited_filter)
   local range = self._world.range
-  if not (is_finite(new_x) and is_finite(new_y)) or new_x < -range or new_x + w > range
-    or new_y < -range or new_y + h > range then
+  if not (is_finite(new_x) and is_finite(new_y)) or new_x < -range or new_x > range
+    or new_x + w > range or new_y < -range or new_y > range or new_y + h > range then
     error(format("response %s must return the new goal (two finite numbers keeping the "
       .. "item within the world's range, -%s to %s), got %s, %s", describe(name),
       describe(range), describe(range), describe(new_x), describe(new_y)), game_level())
@@ -1002,7 +1002,8 @@ end
 local function goal_ok(self, proxy, goal_x, goal_y, filter)
   local range = self._world.range
   return type(goal_x) == "number" and type(goal_y) == "number" and goal_x >= -range
-    and goal_x + proxy.width <= range and goal_y >= -range and goal_y + proxy.height <= range
+    and goal_x <= range and goal_x + proxy.width <= range and goal_y >= -range
+    and goal_y <= range and goal_y + proxy.height <= range -- (<= range: see check_span)
     and (filter == nil or type(filter) == "function")
 end
 

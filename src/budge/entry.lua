@@ -139,7 +139,9 @@ end
 ---@param level? integer where the error points (default 3: the caller of the entry)
 function entry.check_span(self, low, size, name, what, level)
   local range = self.range
-  if low < -range or low + size > range then
+  -- (low > range too: on Lua 5.3+ an integer low near math.maxinteger plus an integer
+  -- size wraps around to a negative number)
+  if low < -range or low > range or low + size > range then
     error(format("%s must keep %s within this world's range, -%s to %s (2^24 cells of %s "
       .. "px, at most 2^40 px), got %s", name, what, describe(range), describe(range),
       describe(self.cell_size), describe(low)), level or 3)

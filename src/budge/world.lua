@@ -383,8 +383,9 @@ local function check_move(self, actor, dx, dy, method)
   check_number(dx, "dx", 3)
   check_number(dy, "dy", 3)
   local range, to_x, to_y = self.range, actor.x + dx, actor.y + dy
-  if to_x < -range or to_x + actor.width > range or to_y < -range
-    or to_y + actor.height > range then -- (tested inline: this entry is hot)
+  if to_x < -range or to_x > range or to_x + actor.width > range or to_y < -range
+    or to_y > range or to_y + actor.height > range then -- (inline: this entry is hot; see
+    -- check_span for to_x > range)
     check_span(self, to_x, actor.width, "dx", "the actor", 4)
     check_span(self, to_y, actor.height, "dy", "the actor", 4)
   end
@@ -472,7 +473,8 @@ function World:move(actor, dx, dy, method)
       check_number(dy, "dy", 2)
     end
     local range, to_x, to_y = self.range, x + dx, y + dy
-    if to_x < -range or to_x + width > range or to_y < -range or to_y + height > range then
+    if to_x < -range or to_x > range or to_x + width > range or to_y < -range
+      or to_y > range or to_y + height > range then -- (to_x > range: see check_span)
       check_span(self, to_x, width, "dx", "the actor")
       check_span(self, to_y, height, "dy", "the actor")
     end
