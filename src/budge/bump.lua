@@ -561,54 +561,35 @@ local function response_of(self, answer, other)
   return response
 end
 
--- The axis (1: x, 2: y) across which the box (x, y, w, h) moving by (dx, dy) enters
--- `record`: the later of its entry times on each axis (y when as late), as in nearest.
-local function entered_across(record, x, y, w, h, dx, dy)
-  local rx, ry = record[1], record[2]
-  local enter_x = min((rx - (x + w)) / dx, (rx + record[3] - x) / dx)
-  local enter_y = min((ry - (y + h)) / dy, (ry + record[4] - y) / dy)
-  if enter_x > enter_y then return 1 end
-  return 2
+-- A box's face on `axis` (1: x, 2: y) that a move by `d` along it meets first, as a key
+-- that is larger for the face nearer along the move: its low side negated moving forward,
+-- its high side moving back.
+local function near_face(axis, d, x, y, w, h)
+  if axis == 1 then
+    if d > 0 then return -x end
+    return x + w
+  end
+  if d > 0 then return -y end
+  return y + h
 end
 
 -- True when record b comes before record a met at the same time t (a leg time; negative
 -- for an overlap at the start), b entered across axis_b and a across axis_a (see
--- entered_across): first the one whose face is nearer along the move, when both are
+-- leg_axis): first the one whose face is nearer along the move, when both are
 -- entered across the same axis (their times can round to the same t with faces apart,
 -- and the move stops on the face of the one chosen: the other's, nearer, would be an ulp
 -- inside); then the one whose centre is nearer the centre of the box (x, y, w, h), or as
 -- near and added earlier.
 local function comes_before(b, a, t, axis_b, axis_a, x, y, w, h, dx, dy)
-  if t >= 0 then
-    local axis = axis_b
-    if axis == axis_a then
-      local fb, fa
-      if axis == 1 then
-        if dx > 0 then fb, fa = -b[1], -a[1] else fb, fa = b[1] + b[3], a[1] + a[3] end
-      elseif dy > 0 then fb, fa = -b[2], -a[2]
-      else fb, fa = b[2] + b[4], a[2] + a[4] end
-      if fb ~= fa then return fb > fa end
-    end
+  if t >= 0 and axis_b == axis_a then
+    local d = axis_b == 1 and dx or dy
+    local fb = near_face(axis_b, d, b[1], b[2], b[3], b[4])
+    local fa = near_face(axis_b, d, a[1], a[2], a[3], a[4])
+    if fb ~= fa then return fb > fa end
   end
   local da = square_distance(x, y, w, h, a[1], a[2], a[3], a[4])
   local db = square_distance(x, y, w, h, b[1], b[2], b[3], b[4])
   return db < da or db == da and b.id < a.id
-end
-
--- The candidate `record`, met at leg time `first` (no later than the best so far),
--- becomes the leg's best unless the best so far comes before it.
-local function offer(self, record, first)
-  if first == self._best_t then
-    local best, x, y, w, h = self._best, self._leg_x, self._leg_y, self._w, self._h
-    local dx, dy = self._leg_dx, self._leg_dy
-    local axis, best_axis = entered_across(record, x, y, w, h, dx, dy),
-      entered_across(best, x, y, w, h, dx, dy)
-    if axis ~= best_axis and first > 0 then self._cross_tie = true end -- (see clamp_tie)
-    if not comes_before(record, best, first, axis, best_axis, x, y, w, h, dx, dy) then
-      return
-    end
-  end
-  self._best, self._best_t = record, first
 end
 
 -- The running leg's times (fractions of it) of reaching and leaving `record` on each
@@ -620,6 +601,29 @@ local function leg_times(self, record)
   return (rx - self._leg_x1) / self._leg_dx, (rx + record[3] - self._leg_x) / self._leg_dx,
     (ry - self._leg_y1) / self._leg_dy, (ry + record[4] - self._leg_y) / self._leg_dy
 end
+
+-- The axis (1: x, 2: y) across which the running leg enters `record`: the later of its
+-- entry times on each axis (y when as late: budge's corner rule).
+local function leg_axis(self, record)
+  local near_x, far_x, near_y, far_y = leg_times(self, record)
+  return min(near_x, far_x) > min(near_y, far_y) and 1 or 2
+end
+
+-- The candidate `record`, met at leg time `first` (no later than the best so far),
+-- becomes the leg's best unless the best so far comes before it.
+local function offer(self, record, first)
+  if first == self._best_t then
+    local best, x, y, w, h = self._best, self._leg_x, self._leg_y, self._w, self._h
+    local dx, dy = self._leg_dx, self._leg_dy
+    local axis, best_axis = leg_axis(self, record), leg_axis(self, best)
+    if axis ~= best_axis and first > 0 then self._cross_tie = true end -- (see clamp_tie)
+    if not comes_before(record, best, first, axis, best_axis, x, y, w, h, dx, dy) then
+      return
+    end
+  end
+  self._best, self._best_t = record, first
+end
+
 
 -- Past the region's last record, nearest's loop (LuaJIT) reads PAD of these: a record
 -- no leg overlaps and every leg has passed (its box starts at +inf, its mark is +inf;
@@ -757,9 +761,7 @@ local function nearest(self)
   end
   local best = self._best
   if best == nil then return nil, HUGE, 0 end
-  -- the axis it is entered across, for the best alone (the same times again)
-  local near_x, far_x, near_y, far_y = leg_times(self, best)
-  return best, self._best_t, min(near_x, far_x) > min(near_y, far_y) and 1 or 2
+  return best, self._best_t, leg_axis(self, best) -- (the axis for the best alone)
 end
 
 -- Fills col for meeting `record` at leg time t (see leg_candidates) on the leg from (x, y)
@@ -1078,11 +1080,10 @@ local function col_before(a, b)
   local ir, ar, br = a.itemRect, a.otherRect, b.otherRect
   local an, bn = a.normal, b.normal
   if a.ti >= 0 and an.x == bn.x and an.y == bn.y then
-    local fa, fb -- (the faces, negated where the nearer is the smaller)
-    if an.x < 0 then fa, fb = -ar.x, -br.x
-    elseif an.x > 0 then fa, fb = ar.x + ar.w, br.x + br.w
-    elseif an.y < 0 then fa, fb = -ar.y, -br.y
-    else fa, fb = ar.y + ar.h, br.y + br.h end
+    -- (the normal faces the move: -1 for a move forward on its axis)
+    local axis, d = an.x ~= 0 and 1 or 2, -(an.x + an.y)
+    local fa = near_face(axis, d, ar.x, ar.y, ar.w, ar.h)
+    local fb = near_face(axis, d, br.x, br.y, br.w, br.h)
     if fa ~= fb then return fa > fb end
   end
   return square_distance(ir.x, ir.y, ir.w, ir.h, ar.x, ar.y, ar.w, ar.h)
