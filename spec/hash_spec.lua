@@ -131,7 +131,9 @@ local function check_packs(h)
       if rec.removed then -- (its copies emptied, as solids.retire does)
         x, y, right, bottom = math.huge, math.huge, -math.huge, -math.huge
       end
-      assert.are.same({x, y, right, bottom, rec.oneway == true, rec},
+      -- (the id, negated for a oneway record; the record, or its payload: hash.new)
+      local flag = (rec.oneway and -1 or 1) * (rec[6] or 1)
+      assert.are.same({x, y, right, bottom, flag, h._payload and rec[h._payload] or rec},
         {store[base + 1], store[base + 2], store[base + 3], store[base + 4], store[base + 5],
           store[base + 6]})
     end
@@ -147,14 +149,17 @@ end
 describe("Hash:axis_stop over packed cells", function()
   it("stops where the records' own scan and a brute force over every record do", function()
     local random = random_source.new(4242)
-    local compared, stopped, ties, packed_scans, with_big = 0, 0, 0, 0, 0
+    local compared, stopped, ties, packed_scans, with_big, with_payload = 0, 0, 0, 0, 0, 0
     local sparse, dense, far_scans = 0, 0, 0
     local scenes = scaled(60)
     for scene = 1, scenes do
       local dyadic = scene % 2 == 0
       local cell_size = ({16, 32, 64, 50})[scene % 4 + 1]
-      local packed, plain = hash.new(cell_size, true), hash.new(cell_size)
-      local records, twins = {}, {}
+      -- (in two scenes of three, the world's solids' form: the entries hold each record's
+      -- item, [7], and its id, [6], which the touch list then gives)
+      local payload = scene % 3 ~= 1 and 7 or nil
+      local packed, plain = hash.new(cell_size, true, payload), hash.new(cell_size)
+      local records, twins, items, ids = {}, {}, {}, 0
       local function add()
         local rec = { -- (a record's box: [1] x, [2] y, [3] width, [4] height)
           random(-1200, 1200) / (dyadic and 8 or 7),
@@ -171,6 +176,9 @@ describe("Hash:axis_stop over packed cells", function()
           rec[random(1, 2)] = random(-1, 1) * 2 ^ 17 + random(-100, 100)
         end
         local twin = {rec[1], rec[2], rec[3], rec[4], oneway = rec.oneway}
+        ids = ids + 1
+        rec[6], rec[7] = ids, {}
+        items[rec[7]] = rec
         packed:insert(rec, rec[1], rec[2], rec[3], rec[4])
         plain:insert(twin, twin[1], twin[2], twin[3], twin[4])
         records[#records + 1], twins[rec] = rec, twin
@@ -235,8 +243,14 @@ describe("Hash:axis_stop over packed cells", function()
           assert.are.equal(q.touched, p.touched)
           local count = 0
           for c = 1, p.touched do
-            assert.are.equal(twins[p.touch[c]], q.touch[c]) -- the same order
-            assert.is_true(set[p.touch[c]] == true)
+            local rec = p.touch[c]
+            if payload then
+              rec = items[rec]
+              assert.are.equal(rec[6], p.touch_id[c])
+              if c == 1 then with_payload = with_payload + 1 end
+            end
+            assert.are.equal(twins[rec], q.touch[c]) -- the same order
+            assert.is_true(set[rec] == true)
             count = count + 1
           end
           for _ in pairs(set) do count = count - 1 end
@@ -264,6 +278,7 @@ describe("Hash:axis_stop over packed cells", function()
     assert.is_true(ties > scenes * 5 / 6, ties)
     assert.is_true(packed_scans > compared / 2, packed_scans)
     assert.is_true(with_big > scenes * 25 / 3, with_big)
+    assert.is_true(with_payload > stopped / 2, with_payload) -- (items and ids given)
     -- both layouts of the store, and scans among the far boxes
     assert.is_true(sparse >= scenes * 2 / 15 and dense >= scenes / 2, sparse .. " " .. dense)
     assert.is_true(far_scans > scenes / 2, far_scans)

@@ -24,7 +24,7 @@
 local here = (...):match("^(.*)%.[^%.]+$")
 local sweep = require(here .. ".sweep")
 
-local floor, min, max = math.floor, math.min, math.max
+local abs, floor, min, max = math.abs, math.floor, math.min, math.max
 -- LuaJIT takes the branch-free forms of the scans (math.min compiles to no branch there);
 -- Lua 5.1-5.4 the ones with comparisons.
 local BRANCH_FREE = rawget(_G, "jit") ~= nil
@@ -134,7 +134,10 @@ end
 ---budge.bump's items (their own boxes written over their entries by Hash:repack). All
 ---the cells' copies are in one flat array, the store: a cell's entries one after the
 ---other, in the cell's order, six values each (an entry starting at b: b + 1 x, b + 2 y,
----b + 3 right, b + 4 bottom, b + 5 oneway, b + 6 the record), from _span[2 * slot - 1]
+---b + 3 right, b + 4 bottom, b + 5 the record's id ([6], or 1 without one), negated when
+---it is oneway, b + 6 the record, or with `payload` the record's [payload]: the world's
+---solids keep their items there, and a hit with one is written from its entry alone,
+---with no read of the record), from _span[2 * slot - 1]
 ---to _span[2 * slot], with room up to _room[slot]. A cell's slot is a number worked out from its
 ---column and row: while the cells in use fill a good part of the rectangle around them,
 ---an index into that rectangle (the three tables are arrays, read by index), otherwise
@@ -152,12 +155,18 @@ end
 ---its box, kind, mark and cells moved to the array part: a world bench scene of 8000
 ---boxes does not fit in the cache the scan reads through), and writes no stamp into the
 ---records it passes.
+---Speed (payload): `luajit bench/world.lua --way boxes --count 10000`, the box per tile
+---at 10000 actors, where reading each hit's record for its item and id was a cache miss:
+---see the CHANGELOG's entry "Box hits from the store".
 ---@param cell_size number > 0, checked by the caller
 ---@param packed? boolean
+---@param payload? integer the slot of a record its entries and Hash:axis_stop's touch
+---list hold instead of the record (unique to the record in this hash)
 ---@return budge.Hash
-function hash.new(cell_size, packed)
+function hash.new(cell_size, packed, payload)
   return setmetatable({cell_size = cell_size, _cells = {}, _stamp = 0,
     _all = {SENTINEL, SENTINEL}, _n = 0, _big = {}, _packed = packed == true,
+    _payload = payload or false,
     _exact = power_of_two(cell_size), _store = {}, _span = {}, _room = {}, _top = 0,
     _gx0 = 0, _gy0 = 0, _gx1 = -1, _gy1 = -1, _gw = 0, _cx = {}, _cy = {}}, Hash)
 end
@@ -294,7 +303,7 @@ end
 -- stays one run of memory, and a trace's writes into it never leave its array part (with
 -- nil there, the platformer of `luajit bench/jit.lua` aborted 242 side traces a run at
 -- the writes below, "register coalescing too complex").
-local function pack_add(self, cx, cy, x, y, right, bottom, oneway, record)
+local function pack_add(self, cx, cy, x, y, right, bottom, flag, entry)
   local slot = slot_of(self, cx, cy)
   local store, span = self._store, self._span
   local base = span[2 * slot] + 6
@@ -308,7 +317,7 @@ local function pack_add(self, cx, cy, x, y, right, bottom, oneway, record)
     base = top + used
   end
   store[base + 1], store[base + 2], store[base + 3] = x, y, right
-  store[base + 4], store[base + 5], store[base + 6] = bottom, oneway, record
+  store[base + 4], store[base + 5], store[base + 6] = bottom, flag, entry
   span[2 * slot] = base
 end
 
@@ -318,12 +327,19 @@ end
 -- bench/instructions.lua --way bump_boxes --count 10000 --frames 5 --lua lua5.4`,
 -- 2026-12-05): the records are budge's own tables, with no metatable, so `~=` is raw
 -- there (a false where the store has no entry compares unequal as well).
-local find_entry = BRANCH_FREE and function(store, base, record)
-  while not rawequal(store[base + 6], record) do base = base + 6 end
+local find_entry = BRANCH_FREE and function(store, base, entry)
+  while not rawequal(store[base + 6], entry) do base = base + 6 end
   return base
-end or function(store, base, record)
-  while store[base + 6] ~= record do base = base + 6 end
+end or function(store, base, entry)
+  while store[base + 6] ~= entry do base = base + 6 end
   return base
+end
+
+-- What the store's entries of `record` hold in their last slot (see hash.new).
+local function entry_of(self, record)
+  local payload = self._payload
+  if payload then return record[payload] end
+  return record
 end
 
 -- Takes `record`'s entry out of the cell (cx, cy), keeping the others' order.
@@ -331,7 +347,7 @@ local function pack_remove(self, cx, cy, record)
   local slot = slot_of(self, cx, cy)
   local store, span = self._store, self._span
   local e, from = span[2 * slot], span[2 * slot - 1]
-  from = find_entry(store, from, record)
+  from = find_entry(store, from, entry_of(self, record))
   for j = from + 1, e do store[j] = store[j + 6] end
   for j = e + 1, e + 6 do store[j] = false end
   span[2 * slot] = e - 6
@@ -350,7 +366,9 @@ function Hash:insert(record, x, y, width, height)
   local slot = self._n + 1
   all[slot], record._slot, self._n = record, slot, slot
   all[slot + 1], all[slot + 2] = SENTINEL, SENTINEL
-  local right, bottom, oneway = x + width, y + height, record.oneway == true
+  local right, bottom = x + width, y + height
+  local flag, entry = record[6] or 1, entry_of(self, record) -- (the entries' last two)
+  if record.oneway == true then flag = -flag end
   local size, exact, packed = self.cell_size, self._exact, self._packed
   local px1, py1 = packed_end(cx0, right, size, exact), packed_end(cy0, bottom, size, exact)
   -- (a big record too: it has no entries, but budge.bump reads the range they would have)
@@ -391,7 +409,7 @@ function Hash:insert(record, x, y, width, height)
     end
     cell[#cell + 1] = record
     if packed and cx <= px1 and cy <= py1 then
-      pack_add(self, cx, cy, x, y, right, bottom, oneway, record)
+      pack_add(self, cx, cy, x, y, right, bottom, flag, entry)
     end
   end
 end
@@ -465,13 +483,13 @@ end
 ---@param bottom number
 function Hash:repack(record, x, y, right, bottom)
   if record._big_slot then return end
-  local store, span = self._store, self._span
+  local store, span, entry = self._store, self._span, entry_of(self, record)
   local cx0, cy0 = record[8], record[9]
   local columns = record[12] - cx0 + 1
   for k = 0, columns * (record[13] - cy0 + 1) - 1 do -- (one flat loop: see insert)
     local row = floor(k / columns)
     local slot = slot_of(self, cx0 + (k - row * columns), cy0 + row)
-    local base = find_entry(store, span[2 * slot - 1], record)
+    local base = find_entry(store, span[2 * slot - 1], entry)
     store[base + 1], store[base + 2], store[base + 3], store[base + 4] = x, y, right, bottom
   end
 end
@@ -835,7 +853,9 @@ local function consider(probe, record, low, length)
   local touched = probe.touched
   if stop ~= best then probe.best = stop; touched = 0 end
   touched = touched + 1
-  probe.touch[touched] = record
+  local payload = probe.payload
+  probe.touch[touched], probe.touch_id[touched] = payload and record[payload] or record,
+    record[6]
   probe.touch_left[touched], probe.touch_top[touched] = record[1], record[2]
   probe.touched = touched
 end
@@ -866,10 +886,10 @@ end
 -- that the first meeting keeps its place, as the stamps do in scan_cell, at a constant
 -- cost (a search of the touch list would cost its length at every tie).
 local function consider_packed(probe, pack, base, face, cx, cy)
-  local stop = stop_at(probe, face, pack[base + 5])
+  local flag = pack[base + 5]
+  local stop = stop_at(probe, face, flag < 0)
   if stop == nil then return end -- (a solid removed during the move: no entry passes the
   -- scan's test, solids.retire emptied them; the record is not read here)
-  local record = pack[base + 6]
   local touched = probe.touched
   if stop ~= probe.best then
     probe.best = stop
@@ -882,7 +902,7 @@ local function consider_packed(probe, pack, base, face, cx, cy)
     if cx ~= first_cx or cy ~= first_cy then return end -- met in an earlier cell
   end
   touched = touched + 1
-  probe.touch[touched] = record
+  probe.touch[touched], probe.touch_id[touched] = pack[base + 6], abs(flag)
   probe.touch_left[touched], probe.touch_top[touched] = pack[base + 1], pack[base + 2]
   probe.touched = touched
 end
@@ -981,6 +1001,7 @@ end
 ---@param y1 number
 ---@param probe budge.AxisProbe
 function Hash:axis_stop(x0, y0, x1, y1, probe)
+  probe.payload = self._payload -- (what its touch list holds: see hash.new)
   -- (cells_of and next_stamp written out: one call less per move on Lua 5.4)
   local size = self.cell_size
   local cx0, cy0 = floor(x0 / size), floor(y0 / size)

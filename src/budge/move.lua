@@ -262,10 +262,9 @@ local function phase_stop(world, probe)
       if probe.is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
       local touch, pos = probe.touch, probe.pos
       local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
-      for c = 1, probe.touched do
-        local record = touch[c] -- (its item and id from the array part: budge.Record)
-        add_hit(world, record[7], side, nil, nil, probe.touch_top[c], probe.touch_left[c],
-          record[6], SLIDE, t)
+      for c = 1, probe.touched do -- (the solids' items and ids: their records are not read)
+        add_hit(world, touch[c], side, nil, nil, probe.touch_top[c], probe.touch_left[c],
+          probe.touch_id[c], SLIDE, t)
       end
       probe.sources = probe.sources + probe.touched
     end

@@ -78,7 +78,11 @@ end
 ---@field before number px of the move's path before this phase (hits' times: move.lua)
 ---@field path number the move's whole path, px
 ---@field best? number output: the nearest stop found so far
----@field touch budge.HashRecord[] output: the hashed records that stop the box at best
+---@field touch any[] output: the hashed records that stop the box at best (or what the
+---hash's entries hold instead of its records: their payload, see hash.new)
+---@field touch_id integer[] output: their ids (a world record's [6]), read from the store
+---for a packed entry
+---@field payload integer|false Hash:axis_stop's: the hash's payload slot (hash.new)
 ---@field touched integer output: how many of touch are valid
 ---@field touch_left number[] output: their boxes' left sides, as the hash holds them (the
 ---hits' sort keys, read there rather than from each record's item: at 10000 actors moving
@@ -102,7 +106,7 @@ end
 function sweep.new_probe()
   return {is_x = true, forward = true, pos = 0, size = 0, edge = 0, reach = 0, cross = 0,
     cross_end = 0, blocks_oneway = false, before = 0, path = 1, touch = {}, touched = 0,
-    touch_left = {}, touch_top = {},
+    touch_left = {}, touch_top = {}, touch_id = {}, payload = false,
     sources = 0, cols = {1, 1}, rows = {1, 1}, sign = 1, signed_reach = 0, signed_pos = 0,
     face_slot = 1, cross_slot = 2, scan_cx0 = 0, scan_cy0 = 0, cell_size = 1}
 end

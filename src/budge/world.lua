@@ -173,8 +173,9 @@ function world.new_world(opts)
   local self = setmetatable({
     cell_size = cell_size, range = range,
     _records = {}, _next_id = 0,
-    -- (the solids' hash keeps packed copies of their boxes: hash.new says why)
-    _solids = hash.new(cell_size, true), _solid_count = 0, _layers = {},
+    -- (the solids' hash keeps packed copies of their boxes, with their items (a record's
+    -- [7]) in place of the records: hash.new says why)
+    _solids = hash.new(cell_size, true, 7), _solid_count = 0, _layers = {},
     _bounds = solids.new_bounds(), _box_bounds = solids.new_bounds(),
     _actors = hash.new(cell_size), _actor_list = {},
     _slot_of = {}, _abox = {}, _next_at = 6, _last_at = 0, _stale = {}, _n_stale = 0,
