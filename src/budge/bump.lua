@@ -427,6 +427,7 @@ function bump.newWorld(cell_size)
     _leg_x = 0, _leg_y = 0, _leg_dx = 0, _leg_dy = 0, _leg_x1 = 0, _leg_y1 = 0,
     _leg_goal_x = 0, _leg_goal_y = 0, _leg_left = 0, _leg_top = 0, _leg_right = 0, _leg_bottom = 0,
     _best = false, _best_t = 0, _cross_tie = false, -- (false until the first leg)
+    _best_enter_x = 0, _best_enter_y = 0, -- the best's entry times (offer)
     _region = {}, _region_n = 0, _region_left = 0, _region_top = 0, _region_right = 0,
     _region_bottom = 0, -- what the move's first leg's rectangle overlaps
     _move_cols = {}, _move_pool = {},
@@ -575,7 +576,7 @@ end
 
 -- True when record b comes before record a met at the same time t (a leg time; negative
 -- for an overlap at the start), b entered across axis_b and a across axis_a (see
--- leg_axis): first the one whose face is nearer along the move, when both are
+-- offer): first the one whose face is nearer along the move, when both are
 -- entered across the same axis (their times can round to the same t with faces apart,
 -- and the move stops on the face of the one chosen: the other's, nearer, would be an ulp
 -- inside); then the one whose centre is nearer the centre of the box (x, y, w, h), or as
@@ -602,26 +603,27 @@ local function leg_times(self, record)
     (ry - self._leg_y1) / self._leg_dy, (ry + record[4] - self._leg_y) / self._leg_dy
 end
 
--- The axis (1: x, 2: y) across which the running leg enters `record`: the later of its
--- entry times on each axis (y when as late: budge's corner rule).
-local function leg_axis(self, record)
-  local near_x, far_x, near_y, far_y = leg_times(self, record)
-  return min(near_x, far_x) > min(near_y, far_y) and 1 or 2
-end
-
--- The candidate `record`, met at leg time `first` (no later than the best so far),
--- becomes the leg's best unless the best so far comes before it.
-local function offer(self, record, first)
+-- The candidate `record`, met at leg time `first` (no later than the best so far) and
+-- entered at leg times enter_x and enter_y on each axis, becomes the leg's best unless
+-- the best so far comes before it. The axis a leg enters a record across (1: x, 2: y)
+-- is that of the later of its entry times (y when as late: budge's corner rule). The
+-- best's entry times are kept, not worked out again from its box at each tie (ties are
+-- frequent: a box resting on two tiles meets both at 0; and the times are four
+-- divisions): `luajit bench/world.lua --way bump_boxes`, see the CHANGELOG's entry
+-- "Ties in budge.bump without the times again".
+local function offer(self, record, first, enter_x, enter_y)
   if first == self._best_t then
     local best, x, y, w, h = self._best, self._leg_x, self._leg_y, self._w, self._h
     local dx, dy = self._leg_dx, self._leg_dy
-    local axis, best_axis = leg_axis(self, record), leg_axis(self, best)
+    local axis = enter_x > enter_y and 1 or 2
+    local best_axis = self._best_enter_x > self._best_enter_y and 1 or 2
     if axis ~= best_axis and first > 0 then self._cross_tie = true end -- (see clamp_tie)
     if not comes_before(record, best, first, axis, best_axis, x, y, w, h, dx, dy) then
       return
     end
   end
   self._best, self._best_t = record, first
+  self._best_enter_x, self._best_enter_y = enter_x, enter_y
 end
 
 
@@ -742,26 +744,28 @@ local function nearest(self)
     if min(self._leg_right - rx, rx + record[3] - self._leg_left, self._leg_bottom - ry,
       ry + record[4] - self._leg_top, self._pass - record[MARK]) > 0 then
       local near_x, far_x, near_y, far_y = leg_times(self, record)
+      local enter_x, enter_y = min(near_x, far_x), min(near_y, far_y)
       -- (+ 0: -0 becomes 0, for math.max gives either zero on a tie, by interpreter)
-      local first = max(min(near_x, far_x), min(near_y, far_y)) + 0
+      local first = max(enter_x, enter_y) + 0
       local exit = min(max(near_x, far_x), max(near_y, far_y))
       if min(exit - first, 1 - first, exit) > 0 then
         if first < 0 then -- overlapping at the start: bump's negative measure of it
           first = overlap_depth(self._leg_x, self._leg_y, self._w, self._h, rx, ry,
             record[3], record[4])
         end
-        if first <= self._best_t then offer(self, record, first) end
+        if first <= self._best_t then offer(self, record, first, enter_x, enter_y) end
       elseif min(self._leg_goal_x + self._w - rx, rx + record[3] - self._leg_goal_x,
         self._leg_goal_y + self._h - ry, ry + record[4] - self._leg_goal_y) > 0 then
         -- the box where the leg ends overlaps it: entered, though the times (from x + w;
         -- the goal's far side is goal_x + w) round its entry to the end or past it
-        if BELOW_ONE <= self._best_t then offer(self, record, BELOW_ONE) end
+        if BELOW_ONE <= self._best_t then offer(self, record, BELOW_ONE, enter_x, enter_y) end
       end
     end
   end
   local best = self._best
   if best == nil then return nil, HUGE, 0 end
-  return best, self._best_t, leg_axis(self, best) -- (the axis for the best alone)
+  -- (the axis for the best alone: see offer)
+  return best, self._best_t, self._best_enter_x > self._best_enter_y and 1 or 2
 end
 
 -- Fills col for meeting `record` at leg time t (see leg_candidates) on the leg from (x, y)
