@@ -561,3 +561,40 @@ describe("the world's range", function()
     assert.same({1, actor, r - 10}, {n, crushed[1], actor.x})
   end)
 end)
+
+describe("solids whose items have an __eq that calls every pair equal", function()
+  -- The world's solids hash keeps the items themselves in its store; a game's __eq must
+  -- not make removing or moving one solid find another one's entry (Lua 5.1-5.4 call
+  -- __eq for `~=` on two tables sharing it).
+  local same = {__eq = function() return true end}
+  local function solids(world)
+    local a = world:add_solid(setmetatable(box(0, 0, 16, 16), same))
+    local b = world:add_solid(setmetatable(box(32, 0, 16, 16), same)) -- same 64 px cell
+    -- (more solids than the hash scans one by one, so that moves read the packed store)
+    for i = 1, 10 do world:add_solid(setmetatable(box(640 + 32 * i, 640, 16, 16), same)) end
+    return a, b
+  end
+
+  it("remove only the solid they are asked to", function()
+    local world = budge.new_world()
+    local a, b = solids(world)
+    world:remove(b)
+    local actor = world:add_actor(box(-20, 4, 8, 8))
+    assert.same({-8, 4}, position(world, actor, 40, 0)) -- a still stops it
+    actor.x = 60
+    world:update(actor)
+    assert.same({20, 4}, position(world, actor, -40, 0)) -- b is gone: on to a's right face
+    assert.is_true(world:has(a))
+  end)
+
+  it("move only the solid they are asked to", function()
+    local world = budge.new_world()
+    local _, b = solids(world)
+    world:move_solid(b, 8, 0)
+    local actor = world:add_actor(box(-20, 4, 8, 8))
+    assert.same({-8, 4}, position(world, actor, 40, 0)) -- a has not moved
+    actor.x = 70
+    world:update(actor)
+    assert.same({56, 4}, position(world, actor, -40, 0)) -- b's right face is now at 56
+  end)
+end)

@@ -626,7 +626,6 @@ local function offer(self, record, first, enter_x, enter_y)
   self._best_enter_x, self._best_enter_y = enter_x, enter_y
 end
 
-
 -- Past the region's last record, nearest's loop (LuaJIT) reads PAD of these: a record
 -- no leg overlaps and every leg has passed (its box starts at +inf, its mark is +inf;
 -- hash.lua says why the padding).

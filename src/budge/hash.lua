@@ -327,10 +327,13 @@ end
 -- bench/instructions.lua --way bump_boxes --count 10000 --frames 5 --lua lua5.4`,
 -- 2026-12-05): the records are budge's own tables, with no metatable, so `~=` is raw
 -- there (a false where the store has no entry compares unequal as well).
-local find_entry = BRANCH_FREE and function(store, base, entry)
-  while not rawequal(store[base + 6], entry) do base = base + 6 end
+-- find_item is the rawequal search, which every interpreter uses for a hash whose entries
+-- hold a game's items (hash.new's payload): those may have an __eq that `~=` would call.
+local function find_item(store, base, item)
+  while not rawequal(store[base + 6], item) do base = base + 6 end
   return base
-end or function(store, base, entry)
+end
+local find_entry = BRANCH_FREE and find_item or function(store, base, entry)
   while store[base + 6] ~= entry do base = base + 6 end
   return base
 end
@@ -347,7 +350,7 @@ local function pack_remove(self, cx, cy, record)
   local slot = slot_of(self, cx, cy)
   local store, span = self._store, self._span
   local e, from = span[2 * slot], span[2 * slot - 1]
-  from = find_entry(store, from, entry_of(self, record))
+  from = (self._payload and find_item or find_entry)(store, from, entry_of(self, record))
   for j = from + 1, e do store[j] = store[j + 6] end
   for j = e + 1, e + 6 do store[j] = false end
   span[2 * slot] = e - 6
@@ -489,7 +492,7 @@ function Hash:repack(record, x, y, right, bottom)
   for k = 0, columns * (record[13] - cy0 + 1) - 1 do -- (one flat loop: see insert)
     local row = floor(k / columns)
     local slot = slot_of(self, cx0 + (k - row * columns), cy0 + row)
-    local base = find_entry(store, span[2 * slot - 1], entry)
+    local base = (self._payload and find_item or find_entry)(store, span[2 * slot - 1], entry)
     store[base + 1], store[base + 2], store[base + 3], store[base + 4] = x, y, right, bottom
   end
 end
