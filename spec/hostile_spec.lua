@@ -532,6 +532,36 @@ describe("the world's range", function()
     assert.same({0, 0, 0, 0, 10, 10}, {actor.x, actor.y, front:getRect("a")})
   end)
 
+  it("refuses integer sizes that wrap around on Lua 5.3+", function()
+    -- (1 + math.maxinteger wraps to a negative integer: a box that wide was added, moved
+    -- and queried, and stopped nothing)
+    local huge = rawget(math, "maxinteger")
+    if huge == nil then return end -- (Lua 5.1, 5.2 and LuaJIT: numbers do not wrap)
+    local function message(name, what, got)
+      return name .. " must keep the " .. what .. " within this world's range, -1073741824 "
+        .. "to 1073741824 (2^24 cells of 64 px, at most 2^40 px), got " .. got
+    end
+    local world = budge.new_world()
+    assert.has_error(function() world:add_solid(box(1, 0, huge, 10)) end,
+      message("box.x", "box", "1"))
+    assert.has_error(function() world:add_tiles({{1, 1}}, math.floor(huge / 2), 16, {x = 5}) end,
+      message("opts.x", "layer", "5"))
+    local actor = world:add_actor(box(0, 0, 10, 10))
+    actor.width = huge
+    assert.has_error(function() world:move(actor, 5, 0) end, message("dx", "actor", "5"))
+    actor.width = 10
+    assert.has_error(function() world:query_rect(1, 0, huge, 10) end,
+      message("x", "rectangle", "1"))
+    assert.has_error(function() world:query_sweep(5, 0, huge, 1, 1, 0) end,
+      message("x", "box", "5"))
+    local found, count = world:query_rect(-100, -100, 200, 200)
+    assert.same({{actor}, 1, 0, 0}, {found, count, actor.x, actor.y})
+    local front = bump.newWorld()
+    assert.has_error(function() front:add("wide", 1, 0, huge, 10) end,
+      message("x", "rectangle", "1"))
+    assert.same({false, 0}, {front:hasItem("wide"), front:countItems()})
+  end)
+
   it("does bounded work for huge boxes, tiny cells and rectangles over the whole range", function()
     local world = budge.new_world({cell_size = 1e-3})
     local solid = world:add_solid(box(0, 0, 16, 16)) -- 16000 x 16000 cells

@@ -813,7 +813,7 @@ local function custom_response(self, name, col, w, h, goal_x, goal_y)
   local rect = type(len) == "number" and len > 0 and type(cols) == "table"
     and type(cols[1]) == "table" and cols[1].itemRect
   if type(rect) == "table" and is_finite(rect.x) and is_finite(rect.y) and rect.x >= -range
-    and rect.x + w <= range and rect.y >= -range and rect.y + h <= range then
+    and rect.x - 0.0 + w <= range and rect.y >= -range and rect.y - 0.0 + h <= range then
     return new_x, new_y, rect.x, rect.y
   end
   return new_x, new_y, new_x, new_y

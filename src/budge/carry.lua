@@ -51,7 +51,7 @@ local function shove(world, record, is_x, target)
   local x, y = actor.x, actor.y
   local pos = is_x and x or y
   local range = world.range
-  if target < -range or target + (is_x and actor.width or actor.height) > range then
+  if target < -range or target - 0.0 + (is_x and actor.width or actor.height) > range then
     return false -- pushed out of the world's range: crushed instead, left where it is
   end
   if target ~= pos then

@@ -139,9 +139,11 @@ end
 ---@param level? integer where the error points (default 3: the caller of the entry)
 function entry.check_span(self, low, size, name, what, level)
   local range = self.range
-  -- (low > range too: on Lua 5.3+ an integer low near math.maxinteger plus an integer
-  -- size wraps around to a negative number)
-  if low < -range or low > range or low + size > range then
+  -- (on Lua 5.3+ an integer low plus an integer size wraps around to a negative number
+  -- when it passes math.maxinteger: low > range for a low near it, and the sum taken in
+  -- floats, `low - 0.0 + size`, for a size near it; x - 0.0 is x for every float, -0
+  -- too, and an integer's float is exact below 2^53, far past any range)
+  if low < -range or low > range or low - 0.0 + size > range then
     error(format("%s must keep %s within this world's range, -%s to %s (2^24 cells of %s "
       .. "px, at most 2^40 px), got %s", name, what, describe(range), describe(range),
       describe(self.cell_size), describe(low)), level or 3)

@@ -277,8 +277,9 @@ function World:add_tiles(grid, tile_width, tile_height, opts)
   end
   opts = tilegrid.check_options(tile_width, tile_height, opts, 2)
   local tiles = layer.new(grid, tile_width, tile_height, opts, 2)
-  check_span(self, tiles.x, tiles.cols * tile_width, "opts.x", "the layer")
-  check_span(self, tiles.y, tiles.rows * tile_height, "opts.y", "the layer")
+  -- (the sizes in floats: an integer product wraps around on Lua 5.3+, see check_span)
+  check_span(self, tiles.x, tiles.cols * (tile_width - 0.0), "opts.x", "the layer")
+  check_span(self, tiles.y, tiles.rows * (tile_height - 0.0), "opts.y", "the layer")
   new_record(self, tiles, TILES)
   solids.add_layer(self, tiles)
   return tiles
@@ -337,8 +338,8 @@ function World:update(item)
   else
     check_number(item.x, "layer.x", 2)
     check_number(item.y, "layer.y", 2)
-    check_span(self, item.x, item.cols * item.tile_width, "layer.x", "the layer")
-    check_span(self, item.y, item.rows * item.tile_height, "layer.y", "the layer")
+    check_span(self, item.x, item.cols * (item.tile_width - 0.0), "layer.x", "the layer")
+    check_span(self, item.y, item.rows * (item.tile_height - 0.0), "layer.y", "the layer")
     layer.reread(item, 2)
     solids.grow_layer(self, item) -- it may have moved
   end
@@ -384,9 +385,9 @@ local function check_move(self, actor, dx, dy, method)
   check_number(dx, "dx", 3)
   check_number(dy, "dy", 3)
   local range, to_x, to_y = self.range, actor.x + dx, actor.y + dy
-  if to_x < -range or to_x > range or to_x + actor.width > range or to_y < -range
-    or to_y > range or to_y + actor.height > range then -- (inline: this entry is hot; see
-    -- check_span for to_x > range)
+  if to_x < -range or to_x > range or to_x - 0.0 + actor.width > range or to_y < -range
+    or to_y > range or to_y - 0.0 + actor.height > range then -- (inline: this entry is
+    -- hot; see check_span for to_x > range and - 0.0)
     check_span(self, to_x, actor.width, "dx", "the actor", 4)
     check_span(self, to_y, actor.height, "dy", "the actor", 4)
   end
@@ -474,8 +475,9 @@ function World:move(actor, dx, dy, method)
       check_number(dy, "dy", 2)
     end
     local range, to_x, to_y = self.range, x + dx, y + dy
-    if to_x < -range or to_x > range or to_x + width > range or to_y < -range
-      or to_y > range or to_y + height > range then -- (to_x > range: see check_span)
+    if to_x < -range or to_x > range or to_x - 0.0 + width > range or to_y < -range
+      or to_y > range or to_y - 0.0 + height > range then -- (to_x > range, - 0.0: see
+      -- check_span)
       check_span(self, to_x, width, "dx", "the actor")
       check_span(self, to_y, height, "dy", "the actor")
     end
