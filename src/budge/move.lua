@@ -841,7 +841,7 @@ local function advance(world, x, y, dx, dy, round, t0, goal_x, goal_y)
     if end_y < from_y then top, far_y = end_y, from_y + height end
     local set, crossing = gather(world, left, top, far_x, far_y)
     local t = first_contact(set, x, y, from_x, from_y, width, height, step_x, step_y, end_x,
-      end_y)
+      end_y, chunks > 1 and dx or nil, dy)
     local contact = t and t_from + (t_to - t_from) * t
     if not t and crossing.n > 0 then -- (with a contact: below, where it stops)
       local last_step = k == chunks

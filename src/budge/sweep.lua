@@ -259,6 +259,18 @@ local function interval_times(pos, size, delta, other, other_far)
   return nil, nil
 end
 
+-- Whether the box (x, y, w, h) moving by (dx, dy) only touches the box from (bx, by) to
+-- (right, bottom) along the whole line: it comes in across both axes no earlier than it
+-- leaves across one (first_contact's test for a step, on the whole motion).
+local function grazed(x, y, w, h, dx, dy, bx, by, right, bottom)
+  local enter_x, exit_x = interval_times(x, w, dx, bx, right)
+  local enter_y, exit_y = interval_times(y, h, dy, by, bottom)
+  if enter_x == nil or enter_y == nil then return true end
+  local enter = enter_x > enter_y and enter_x or enter_y
+  local exit = exit_x < exit_y and exit_x or exit_y
+  return not (enter < exit) -- luacheck: ignore (not >=: the test first_contact makes)
+end
+
 ---When the box (x, y, w, h) moving by (dx, dy), 0 <= t <= 1, first overlaps the box (bx,
 ---by, bw, bh) strictly: the fraction t (0 when it overlaps at the start) and the axis it
 ---came in across (1 for x, 2 for y, also for both at once; 0 when it overlapped at the
@@ -385,8 +397,15 @@ sweep.BELOW_ONE = BELOW_ONE
 ---@param dy number
 ---@param end_x number where this step ends
 ---@param end_y number
+---@param move_dx? number the whole motion from (start_x, start_y), when the step is a part
+---of it: a candidate the step's times say it enters, whose whole motion's times say it
+---only touches (a corner grazed: entry and exit at the same time), is not met. (A step's
+---ends are the motion's points rounded, which can tilt the step's line by an ulp, and a
+---graze became an overlap one ulp of time long.)
+---@param move_dy? number
 ---@return number? t
-function sweep.first_contact(set, start_x, start_y, x, y, w, h, dx, dy, end_x, end_y)
+function sweep.first_contact(set, start_x, start_y, x, y, w, h, dx, dy, end_x, end_y,
+                             move_dx, move_dy)
   local xs, ys, ws, hs, oneway, cols = set.x, set.y, set.w, set.h, set.oneway, set.col
   local touch, normal = set.touch, set.normal
   local touched = 0
@@ -424,7 +443,11 @@ function sweep.first_contact(set, start_x, start_y, x, y, w, h, dx, dy, end_x, e
         if enter_y then
           local enter = enter_x > enter_y and enter_x or enter_y
           local exit = exit_x < exit_y and exit_x or exit_y
-          if not (enter < exit and exit > 0) then enter = nil end
+          if not (enter < exit and exit > 0) then enter = nil
+          elseif move_dx ~= nil and grazed(start_x, start_y, w, h, move_dx, move_dy, bx, by,
+            right, bottom) then
+            enter = nil
+          end
           if (enter == nil or enter >= 1) and end_x < right and bx < end_x + w
             and end_y < bottom and by < end_y + h then
             enter = BELOW_ONE -- (it ends inside it: entered within the step)
