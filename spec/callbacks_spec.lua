@@ -301,6 +301,38 @@ describe("a filter that removes what it touches (brick breaking)", function()
       assert.is_true(world:has(other))
     end
   end)
+
+  -- (a query's filter follows a move's rules; found by a review: the removed item was
+  -- still asked about and returned)
+  it("in a query's filter: what it removed is neither asked about nor returned", function()
+    local world = budge.new_world()
+    local a = world:add_solid(box(0, 0, 10, 10))
+    local b = world:add_solid(box(20, 0, 10, 10))
+    local c = world:add_solid(box(40, 0, 10, 10))
+    local layer = world:add_tiles({{1}}, 8, 8, {x = 60})
+    local names = {[a] = "a", [b] = "b", [c] = "c", [layer] = "layer"}
+    local asked = {}
+    local function breaker(item) -- a removes b and the layer; c removes itself, kept
+      asked[#asked + 1] = names[item]
+      if item == a then world:remove(b); world:remove(layer) end
+      if item == c then world:remove(c) end
+      return true
+    end
+    local out, n = world:query_rect(-5, -5, 100, 20, {}, breaker)
+    assert.same({2, a, c, "a,c"}, {n, out[1], out[2], table.concat(asked, ",")})
+    assert.same({1, 0, 0, 0}, {world:count()}) -- (a alone)
+    -- query_segment, with its times
+    world = budge.new_world()
+    a, b = world:add_solid(box(10, 0, 10, 10)), world:add_solid(box(30, 0, 10, 10))
+    names, asked = {[a] = "a", [b] = "b"}, {}
+    local t
+    out, n, t = world:query_segment(0, 5, 50, 5, {}, {}, function(item)
+      asked[#asked + 1] = names[item]
+      if item == a then world:remove(b) end
+      return true
+    end)
+    assert.same({1, a, 0.2, "a"}, {n, out[1], t[1], table.concat(asked, ",")})
+  end)
 end)
 
 describe("calls into the same world from a filter", function()

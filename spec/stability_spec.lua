@@ -37,6 +37,23 @@ describe("stability: each discrete method's envelope in the world", function()
     assert.is_false(by_method.wall_type.inclusive or by_method.min_axis.inclusive)
   end)
 
+  -- (the bounds above are for walls long across the move; a review's cases, as the README
+  -- gives them: a 4x4 mover flush against the left face of a 64x16 block, mid-height)
+  it("a block short across the move fails sooner: the fat cross's cap, min_axis's way out", function()
+    local budge = require("budge")
+    local function ends(method, speed)
+      local world = budge.new_world()
+      world:add_solid({x = 100, y = 0, width = 64, height = 16})
+      local mover = world:add_actor({x = 96, y = 6, width = 4, height = 4})
+      local x, y = world:move(mover, speed, 0, method)
+      return {x, y}
+    end
+    assert.same({96, 6}, ends("fat_cross", 6)) -- 3/8 of 16
+    assert.same({103, -4}, ends("fat_cross", 7)) -- lifted onto the top
+    assert.same({96, 6}, ends("min_axis", 9))
+    assert.same({106, -4}, ends("min_axis", 10)) -- 10 px out the top: a tie, y wins
+  end)
+
   it("past S + T every discrete method tunnels", function()
     for _, envelope in ipairs(scenarios.ENVELOPES) do
       for _, speed in ipairs({28, 40, 512}) do

@@ -66,7 +66,10 @@ function query.finish(world, n, out, filter, out_t)
   for i = 1, n do
     local record = found[i]
     found[i] = nil
-    if filter == nil or filter(record.item) then
+    -- (an item the filter removed while asked about another is not asked about or kept,
+    -- as a move does not meet it again: README, "Callbacks"; one the filter removes when
+    -- asked about it, and accepts, is kept)
+    if filter == nil or not record.removed and filter(record.item) then
       kept = kept + 1
       out[kept] = record.item
       if out_t then out_t[kept] = record._t end
