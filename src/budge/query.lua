@@ -52,7 +52,8 @@ local function collect_boxes(world, x, y, x1, y1)
 end
 
 ---The items of the query's results (world._found[1..n], sorted) into out[1..n], those
----`filter` refuses left out (and their entries of out_t with them); clears the results
+---`filter` refuses, or that it removed from the world before it was asked about them,
+---left out (and their entries of out_t with them); clears the results
 ---and the rest of out and out_t. Returns the new count.
 ---@param world budge.World
 ---@param n integer
