@@ -41,6 +41,30 @@ local function describe_move(x, y, cols, len)
 end
 
 describe("budge.bump", function()
+  -- (bump.lua calls whatever it is given and takes false as no filter: a game's class of
+  -- callable filters must work after the switch; found by a review)
+  it("takes what bump.lua takes: callable tables as filters and responses, false, any name",
+    function()
+      local function callable(fn, hidden)
+        return setmetatable({}, {__call = function(_, ...) return fn(...) end,
+          __metatable = hidden and false or nil})
+      end
+      local world = bump.newWorld(64)
+      world:add("player", 0, 0, 10, 10)
+      world:add("wall", 20, 0, 10, 10)
+      local x, y, cols, n = world:check("player", 15, 0, callable(function() return "touch" end))
+      assert.same({10, 0, 1, "touch"}, {x, y, n, cols[1].type})
+      x, y, cols, n = world:check("player", 15, 0, false) -- the default filter: slide
+      assert.same({10, 0, 1, "slide"}, {x, y, n, cols[1].type})
+      local items, count = world:queryRect(0, 0, 40, 10,
+        callable(function(item) return item == "wall" end, true))
+      assert.same({{"wall"}, 1}, {items, count})
+      world:addResponse(1, callable(function(_, col) return col.touch.x, col.touch.y - 5 end))
+      x, y, cols, n = world:move("player", 15, 0, function() return 1 end)
+      assert.same({10, -5, 1, 1}, {x, y, n, cols[1].type})
+      assert.same({10, -5, 10, 10}, {world:getRect("player")})
+    end)
+
   it("has bump.lua 3.1.7's public API, and budge's version", function()
     local world = bump.newWorld()
     for _, name in ipairs({"add", "remove", "update", "move", "check", "project", "queryPoint",
@@ -932,7 +956,7 @@ describe("budge.bump", function()
         {function() world:update("a", 0, 0, -1) end, "w must be a finite number > 0, got %-1"},
         {function() world:move("a", 0 / 0, 0) end, "goalX must be a finite number, got nan"},
         {function() world:move("a", 1, 1, "slide") end,
-          "filter must be a function or nil, got \"slide\""},
+          "filter must be a function, a callable table, false or nil, got \"slide\""},
         {function() world:move("a", 20, 0, function() return "stick" end) end, nil},
         {function() world:queryRect(0, 0, -1, -1) end, "w must be a finite number > 0, got %-1"},
         {function() world.move("a", 1, 1) end,
@@ -941,7 +965,10 @@ describe("budge.bump", function()
           local class = setmetatable({}, {__eq = function() return true end})
           world.add(setmetatable({}, class), 0, 0, 8, 8)
         end, "call it as world:add%(...%), with a colon, got a table for the world"},
-        {function() world:addResponse("x", 3) end, "response must be a function, got 3"},
+        {function() world:addResponse("x", 3) end,
+          "response must be a function or a callable table, got 3"},
+        {function() world:addResponse(nil, bump.responses.touch) end,
+          "name must be a value other than nil and nan, got nil"},
         {function() world:getRect({}) end, "item must be an item of this world"},
         -- (move's and check's goal and filter: one test first, these errors when it fails)
         {function() world:check("a", 1, "5") end, "goalY must be a finite number, got \"5\""},
@@ -952,7 +979,7 @@ describe("budge.bump", function()
           .. "world's range, %-1073741824 to 1073741824 %(2%^24 cells of 64 px, at most 2%^40 "
           .. "px%), got 1099511627776"},
         {function() world:check("a", 0, 0, {}) end,
-          "filter must be a function or nil, got a table"},
+          "filter must be a function, a callable table, false or nil, got a table"},
       }
       world:add("b", 15, 0, 10, 10)
       for i, case in ipairs(cases) do

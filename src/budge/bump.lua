@@ -23,7 +23,7 @@ local sweep = require(here .. ".sweep")
 local entry = require(here .. ".entry")
 local world_module = require(here .. ".world")
 
-local describe, is_finite, check_filter = box.describe, box.is_finite, box.check_filter
+local describe, is_finite = box.describe, box.is_finite
 -- LuaJIT takes the branch-free form of nearest (math.min and math.max compile to no
 -- branch there); Lua 5.1-5.4 the one with comparisons.
 local BRANCH_FREE = rawget(_G, "jit") ~= nil
@@ -383,6 +383,29 @@ local function enter(self, call)
   end
 end
 
+-- What bump.lua calls as a filter or a response: a function, or a table or userdata whose
+-- metatable has a __call (bump calls whatever it is given; debug.getmetatable: a
+-- __metatable field does not hide it).
+local get_metatable = debug and debug.getmetatable or getmetatable
+local function callable(value)
+  local kind = type(value)
+  if kind == "function" then return true end
+  if kind ~= "table" and kind ~= "userdata" then return false end
+  local meta = get_metatable(value)
+  return type(meta) == "table" and rawget(meta, "__call") ~= nil
+end
+
+-- A filter as bump.lua takes one: nil or false (none: returned as nil), or callable;
+-- else an error at `level`.
+local function check_bump_filter(filter, level)
+  if filter == nil or filter == false then return nil end
+  if not callable(filter) then
+    error(format("filter must be a function, a callable table, false or nil, got %s",
+      describe(filter)), level + 1)
+  end
+  return filter
+end
+
 local function find_proxy(self, item)
   local proxy = self._proxies[item]
   if proxy == nil then
@@ -463,11 +486,12 @@ end
 ---h: number, goal_x: number, goal_y: number, filter?: function): number, number
 function World:addResponse(name, response)
   enter(self, "addResponse")
-  if type(name) ~= "string" then
-    error(format("name must be a string, got %s", describe(name)), 2)
+  if name == nil or name ~= name then -- (any other value is a name, as in bump)
+    error(format("name must be a value other than nil and nan, got %s", describe(name)), 2)
   end
-  if type(response) ~= "function" then
-    error(format("response must be a function, got %s", describe(response)), 2)
+  if not callable(response) then
+    error(format("response must be a function or a callable table, got %s",
+      describe(response)), 2)
   end
   self.responses[name] = response
 end
@@ -553,7 +577,7 @@ end
 local function response_of(self, answer, other)
   local fn = self.responses[answer]
   local response = ENGINE[fn]
-  if response == nil and type(fn) == "function" then response = "custom" end
+  if response == nil and callable(fn) then response = "custom" end
   if response == nil then
     error(format("filter must return the name of a response (\"touch\", \"cross\", \"slide\", "
       .. "\"bounce\" or one given to world:addResponse), or false/nil, got %s for %s",
@@ -996,7 +1020,9 @@ local function check_goal(self, proxy, goal_x, goal_y, filter)
   check_finite(goal_y, "goalY", 4)
   check_span(self._world, goal_x, proxy.width, "goalX", "the item", 4)
   check_span(self._world, goal_y, proxy.height, "goalY", "the item", 4)
-  check_filter(filter, 3)
+  -- (false as nil; a callable table as it is. In brackets: not a tail call, which would
+  -- take this frame off the stack and the error's level past the caller)
+  return (check_bump_filter(filter, 3))
 end
 
 -- True when a move's goal is two numbers keeping the item within the world's range (then
@@ -1024,7 +1050,7 @@ function World:check(item, goal_x, goal_y, filter)
   enter(self, "check")
   local proxy = find_proxy(self, item)
   if not goal_ok(self, proxy, goal_x, goal_y, filter) then
-    check_goal(self, proxy, goal_x, goal_y, filter)
+    filter = check_goal(self, proxy, goal_x, goal_y, filter)
   end
   local x, y, n = plan_move(self, proxy, goal_x, goal_y, filter, self._check_cols,
     self._check_pool)
@@ -1044,7 +1070,7 @@ function World:move(item, goal_x, goal_y, filter)
   enter(self, "move")
   local proxy = find_proxy(self, item)
   if not goal_ok(self, proxy, goal_x, goal_y, filter) then
-    check_goal(self, proxy, goal_x, goal_y, filter)
+    filter = check_goal(self, proxy, goal_x, goal_y, filter)
   end
   local x, y, n = plan_move(self, proxy, goal_x, goal_y, filter, self._move_cols,
     self._move_pool)
@@ -1126,8 +1152,7 @@ function World:project(item, x, y, w, h, goal_x, goal_y, filter)
   check_finite(goal_y, "goalY", 3)
   check_span(self._world, goal_x, w, "goalX", "the rectangle", 3)
   check_span(self._world, goal_y, h, "goalY", "the rectangle", 3)
-  check_filter(filter, 2)
-  filter = filter or default_filter
+  filter = check_bump_filter(filter, 2) or default_filter
   local left, top = min(x, goal_x), min(y, goal_y)
   local right, bottom = max(x, goal_x) + w, max(y, goal_y) + h
   -- (query_rect's far sides are left + width and top + height, which can round below
@@ -1208,7 +1233,7 @@ function World:queryPoint(x, y, filter)
   check_finite(y, "y", 3)
   check_span(self._world, x, 0, "x", "the point", 3)
   check_span(self._world, y, 0, "y", "the point", 3)
-  check_filter(filter, 2)
+  filter = check_bump_filter(filter, 2)
   local found, count = self._world:query_point(x, y, self._found)
   return items_of(found, count, filter)
 end
@@ -1224,7 +1249,7 @@ end
 function World:queryRect(x, y, w, h, filter)
   enter(self, "queryRect")
   check_rect(self, x, y, w, h)
-  check_filter(filter, 2)
+  filter = check_bump_filter(filter, 2)
   local found, count = self._world:query_rect(x, y, w, h, self._found)
   return items_of(found, count, filter)
 end
@@ -1256,7 +1281,7 @@ end
 ---@return any[] items, integer len
 function World:querySegment(x1, y1, x2, y2, filter)
   enter(self, "querySegment")
-  check_filter(filter, 2)
+  filter = check_bump_filter(filter, 2)
   local found, count = segment_hits(self, x1, y1, x2, y2)
   return items_of(found, count, filter)
 end
@@ -1272,7 +1297,7 @@ end
 ---@return table[] infos, integer len
 function World:querySegmentWithCoords(x1, y1, x2, y2, filter)
   enter(self, "querySegmentWithCoords")
-  check_filter(filter, 2)
+  filter = check_bump_filter(filter, 2)
   local found, count = segment_hits(self, x1, y1, x2, y2)
   local infos, n = {}, 0
   local dx, dy = x2 - x1, y2 - y1
