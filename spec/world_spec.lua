@@ -953,3 +953,32 @@ describe("garbage", function()
     assert.equal(0, bytes)
   end)
 end)
+
+describe("a move with many hits (a pile of coins)", function()
+  -- (more than 16 hits are sorted in merged runs: found by a review, the insertion sort
+  -- alone was quadratic in the hits, 1.7 s for one move into 8000 coins on Lua 5.4)
+  it("gives them in the order they happened, as a full sort by (round, t, top, left, id)",
+    function()
+      local random = require("fixtures.random").new(11)
+      for _, count in ipairs({17, 40, 300}) do
+        local world = budge.new_world()
+        for _ = 1, count do -- (whole-px positions in a small spot: many equal times)
+          world:add_sensor({x = 100 + random(0, 24), y = 41 + random(0, 9), width = 8,
+            height = 8})
+        end
+        local player = world:add_actor({x = 80, y = 48, width = 12, height = 12})
+        local _, _, n, list = world:move(player, 60, 0)
+        assert.equal(count, n)
+        local sorted = {}
+        for i = 1, n do sorted[i] = list[i] end
+        table.sort(sorted, function(a, b)
+          if a._round ~= b._round then return a._round < b._round end
+          if a.t ~= b.t then return a.t < b.t end
+          if a._top ~= b._top then return a._top < b._top end
+          if a._left ~= b._left then return a._left < b._left end
+          return a._id < b._id
+        end)
+        for i = 1, n do assert.equal(sorted[i], list[i], count .. " hits, at " .. i) end
+      end
+    end)
+end)
