@@ -989,10 +989,10 @@ describe("world:contacts over many records out of order", function()
   it("finds the same pairs whatever order the records were added in", function()
     local function pairs_found(reverse)
       local world = budge.new_world()
-      local actors = {}
+      local sensors, actors = {}, {}
       for k = 1, 150 do
         local i = reverse and 151 - k or k
-        world:add_sensor({x = i * 6, y = 20, width = 8, height = 8, i = i})
+        sensors[i] = world:add_sensor({x = i * 6, y = 20, width = 8, height = 8, i = i})
       end
       for k = 1, 150 do
         local i = reverse and 151 - k or k
