@@ -982,33 +982,3 @@ describe("a move with many hits (a pile of coins)", function()
       end
     end)
 end)
-
-describe("world:contacts over many records out of order", function()
-  -- (its frame order is kept by insertion, past a few moves per record by a merged sort:
-  -- a review's 16000 bullets, a tenth new each frame, took 1078 ms per frame on Lua 5.4)
-  it("finds the same pairs whatever order the records were added in", function()
-    local function pairs_found(reverse)
-      local world = budge.new_world()
-      local sensors, actors = {}, {}
-      for k = 1, 150 do
-        local i = reverse and 151 - k or k
-        sensors[i] = world:add_sensor({x = i * 6, y = 20, width = 8, height = 8, i = i})
-      end
-      for k = 1, 150 do
-        local i = reverse and 151 - k or k
-        actors[i] = world:add_actor({x = i * 6 + 3, y = 10, width = 8, height = 8, i = i})
-      end
-      for frame = 1, 3 do
-        for i = 1, 150 do world:move(actors[i], (i + frame) % 5 - 2, 3) end
-      end
-      local out, n = world:contacts({})
-      local found = {}
-      for k = 1, n do found[#found + 1] = out[k].item.i * 1000 + out[k].other.i end
-      table.sort(found)
-      return found
-    end
-    local forward, reverse = pairs_found(false), pairs_found(true)
-    assert.is_true(#forward > 300, #forward)
-    assert.same(forward, reverse)
-  end)
-end)

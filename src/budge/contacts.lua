@@ -87,12 +87,6 @@ local function add(world, n, item, other, enter, exit)
   record._item_id, record._other_id = item.id, other.id
 end
 
--- The order of the frame's records: by the swept box's left edge, then the order added.
-local function swept_before(a, b)
-  if a._sx0 ~= b._sx0 then return a._sx0 < b._sx0 end
-  return a.id < b.id
-end
-
 -- Brings the world's frame order up to date: drops what left the world, appends what was
 -- added (actors, then sensors, in their lists' order), and computes each one's swept box.
 local function refresh(world)
@@ -132,12 +126,7 @@ local function refresh(world)
     record._sx0, record._sx1 = (fx < x and fx or x), (fx < x and x or fx) + record[3]
     record._sy0, record._sy1 = (fy < y and fy or y), (fy < y and y or fy) + record[4]
   end
-  -- sorted by the swept box's left edge, then the order added: by insertion (mostly in
-  -- order already from the frame before), and by hits.sort_list (the same order) when
-  -- the insertion has moved records more than a few times each: the insertion sort alone
-  -- took a review's 16000 bullets, a tenth of them new each frame, 94 ms per frame on
-  -- LuaJIT and 1078 on Lua 5.4
-  local shifts, budget = 0, 4 * kept + 64
+  -- insertion sort by the swept box's left edge, then the order added
   for i = 2, kept do
     local record = order[i]
     local left, id = record._sx0, record.id
@@ -147,13 +136,6 @@ local function refresh(world)
       j = j - 1
     end
     order[j + 1] = record
-    shifts = shifts + (i - 1 - j)
-    if shifts > budget then
-      local scratch = world._frame_scratch
-      if scratch == nil then scratch = {}; world._frame_scratch = scratch end
-      hits.sort_list(order, kept, scratch, swept_before)
-      break
-    end
   end
   return kept
 end

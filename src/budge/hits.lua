@@ -236,35 +236,38 @@ function hits.has_tile(world, first, tiles, col, row)
   return false
 end
 
--- Insertion sort of list[first..last] by `before` (stable).
-local function sort_run(list, first, last, before)
+-- Insertion sort of list[first..last] by hit_before (stable).
+local function sort_run(list, first, last)
   for i = first + 1, last do
-    local item = list[i]
+    local hit = list[i]
     local j = i - 1
-    while j >= first and before(item, list[j]) do
+    while j >= first and hit_before(hit, list[j]) do
       list[j + 1] = list[j]
       j = j - 1
     end
-    list[j + 1] = item
+    list[j + 1] = hit
   end
 end
 
--- Lists sorted by insertion alone; past that, runs of this many, merged.
+-- Hits a move sorts by insertion alone; past that, runs of this many, merged.
 local RUN = 16
-hits.RUN = RUN
 
----Sorts list[1..n] by `before` (a strict order: before(a, b) when a comes first),
----stably, as an insertion sort would: runs of RUN by insertion, merged through `scratch`
----(a table the caller keeps, so that nothing is allocated once it has grown). For long
----lists: O(n log n) where the insertion sort alone is quadratic.
----@param list any[]
----@param n integer
----@param scratch any[]
----@param before fun(a: any, b: any): boolean
-function hits.sort_list(list, n, scratch, before)
-  for first = 1, n, RUN do
-    sort_run(list, first, first + RUN <= n and first + RUN - 1 or n, before)
-  end
+---Sorts the world's hits 1.._n_hits into the order they happened.
+---Speed: an insertion sort, not table.sort: a move has a handful of contacts, and
+---table.sort's calls back into Lua leave LuaJIT's compiled code. With table.sort the
+---world bench's tile moves take 304 ns instead of 232 on LuaJIT, 2454 instead of 2290 on
+---Lua 5.4 (`luajit bench/world.lua --profile tiles`, median of 5, 2026-12-01). More than
+---RUN hits (a player walking into a pile of coins) are sorted in runs of RUN, merged
+---(stable, as the insertion sort: the same order), through a scratch list the world
+---keeps: the insertion sort alone took a review's move into 8000 scattered coins 177 ms
+---on LuaJIT and 1655 ms on Lua 5.4 (quadratic in the hits).
+---@param world budge.World
+function hits.sort(world)
+  local list, n = world._hits, world._n_hits
+  if n <= RUN then sort_run(list, 1, n) return end
+  for first = 1, n, RUN do sort_run(list, first, first + RUN <= n and first + RUN - 1 or n) end
+  local scratch = world._sort_scratch
+  if scratch == nil then scratch = {}; world._sort_scratch = scratch end
   local from, to, width = list, scratch, RUN
   while width < n do
     for low = 1, n, 2 * width do
@@ -273,8 +276,8 @@ function hits.sort_list(list, n, scratch, before)
       local high = low + 2 * width - 1
       if high > n then high = n end
       local i, j = low, mid + 1
-      for k = low, high do -- (the right run's first only when strictly before: stable)
-        if j > high or (i <= mid and not before(from[j], from[i])) then
+      for k = low, high do -- (the right run's hit first only when strictly before: stable)
+        if j > high or (i <= mid and not hit_before(from[j], from[i])) then
           to[k] = from[i]
           i = i + 1
         else
@@ -288,23 +291,6 @@ function hits.sort_list(list, n, scratch, before)
   if not rawequal(from, list) then
     for k = 1, n do list[k] = from[k] end
   end
-end
-
----Sorts the world's hits 1.._n_hits into the order they happened.
----Speed: an insertion sort, not table.sort: a move has a handful of contacts, and
----table.sort's calls back into Lua leave LuaJIT's compiled code. With table.sort the
----world bench's tile moves take 304 ns instead of 232 on LuaJIT, 2454 instead of 2290 on
----Lua 5.4 (`luajit bench/world.lua --profile tiles`, median of 5, 2026-12-01). More than
----RUN hits (a player walking into a pile of coins) go through hits.sort_list (the same
----order), with a scratch list the world keeps: the insertion sort alone took a review's
----move into 8000 scattered coins 177 ms on LuaJIT and 1655 ms on Lua 5.4.
----@param world budge.World
-function hits.sort(world)
-  local list, n = world._hits, world._n_hits
-  if n <= RUN then sort_run(list, 1, n, hit_before) return end
-  local scratch = world._sort_scratch
-  if scratch == nil then scratch = {}; world._sort_scratch = scratch end
-  hits.sort_list(list, n, scratch, hit_before)
 end
 
 return hits
