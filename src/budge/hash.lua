@@ -337,6 +337,12 @@ local find_entry = BRANCH_FREE and find_item or function(store, base, entry)
   while store[base + 6] ~= entry do base = base + 6 end
   return base
 end
+-- The search for this hash's entries: find_item on LuaJIT (where both are it: no read of
+-- the hash's payload on budge.bump's every move) and for a payload's items.
+local function finder(self)
+  if BRANCH_FREE or self._payload then return find_item end
+  return find_entry
+end
 
 -- What the store's entries of `record` hold in their last slot (see hash.new).
 local function entry_of(self, record)
@@ -350,7 +356,7 @@ local function pack_remove(self, cx, cy, record)
   local slot = slot_of(self, cx, cy)
   local store, span = self._store, self._span
   local e, from = span[2 * slot], span[2 * slot - 1]
-  from = (self._payload and find_item or find_entry)(store, from, entry_of(self, record))
+  from = finder(self)(store, from, entry_of(self, record))
   for j = from + 1, e do store[j] = store[j + 6] end
   for j = e + 1, e + 6 do store[j] = false end
   span[2 * slot] = e - 6
@@ -492,7 +498,7 @@ function Hash:repack(record, x, y, right, bottom)
   for k = 0, columns * (record[13] - cy0 + 1) - 1 do -- (one flat loop: see insert)
     local row = floor(k / columns)
     local slot = slot_of(self, cx0 + (k - row * columns), cy0 + row)
-    local base = (self._payload and find_item or find_entry)(store, span[2 * slot - 1], entry)
+    local base = finder(self)(store, span[2 * slot - 1], entry)
     store[base + 1], store[base + 2], store[base + 3], store[base + 4] = x, y, right, bottom
   end
 end
