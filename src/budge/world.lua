@@ -78,6 +78,12 @@ local world = {}
 ---@field package _sy0? number
 ---@field package _sx1? number
 ---@field package _sy1? number
+---@field package _s0? number scratch of world:contacts: the swept box along its axis
+---@field package _s1? number
+---@field package _o0? number and across it
+---@field package _o1? number
+---@field package _frame_filtered? integer the contacts call that found it with a filter
+---@field package _frame_moved? boolean a sensor on the world's moved list
 ---@field package _frame_in? integer the contacts call that last saw it in the world
 ---@field package _mark? number budge.bump's mark: which move met it, or which leg's filter
 ---ignored it (bump.lua, plan_move)
@@ -138,8 +144,14 @@ local world = {}
 ---@field package _n_pending integer
 ---@field package _pending_actors integer how many of them are actors
 ---@field package _pending_layers integer and tile layers
----@field package _frame_order budge.Record[] actors and sensors, by the left of their frame's sweep
----@field package _frame_lists budge.Record[][] the actor list and the sensor list
+---@field package _frame_order budge.Record[] the actors, by their frame's sweep (contacts.lua)
+---@field package _frame_sensor_order budge.Record[] the sensors likewise, while swept with the actors
+---@field package _moved_sensors budge.Record[] the sensors world:update moved since the last world:contacts
+---@field package _frame_found budge.Record[] scratch: the sensors near an actor
+---@field package _frame_filtered_list budge.Record[] scratch: the actors with a filter
+---@field package _frame_scratch budge.Record[] scratch of the merge sort
+---@field package _frame_stats number[] scratch: sizes and spreads of the swept boxes
+---@field package _frame_axis integer the axis the orders are sorted along (1: x, 2: y)
 ---@field package _frame_stamp integer counts world:contacts calls
 ---@field package _contact_pool budge.Contact[] the frame contacts (reused)
 ---@field package _contact_sorted budge.Contact[] scratch: the pool's first n, sorted
@@ -192,10 +204,10 @@ function world.new_world(opts)
     _near = {}, _crushed = {}, _n_crushed = 0, _crush_stamp = 0,
     _crush_lists = {}, _crush_depth = 0,
     _busy = false, _pending = {}, _n_pending = 0, _pending_actors = 0, _pending_layers = 0,
-    _frame_order = {}, _frame_lists = false, _frame_stamp = 0, _contact_pool = {},
-    _contact_sorted = {}, _n_contacts = 0,
+    _frame_order = {}, _frame_sensor_order = {}, _moved_sensors = {}, _frame_found = {}, _frame_filtered_list = {},
+    _frame_scratch = {}, _frame_stats = {0, 0, 0, 0, 0, 0}, _frame_axis = 1,
+    _frame_stamp = 0, _contact_pool = {}, _contact_sorted = {}, _n_contacts = 0,
   }, World)
-  self._frame_lists = {self._actor_list, self._sensor_list}
   return self
 end
 
@@ -334,7 +346,13 @@ function World:update(item)
     actors.rehash_one(self, record)
     -- an actor was teleported: its frame starts here; a sensor moves only this way, so
     -- its frame still sweeps from where it began
-    if kind == ACTOR then record._fx, record._fy = record[1], record[2] end
+    if kind == ACTOR then
+      record._fx, record._fy = record[1], record[2]
+    elseif not record._frame_moved then -- (world:contacts sweeps it apart: contacts.lua)
+      record._frame_moved = true
+      local moved = self._moved_sensors
+      moved[#moved + 1] = record
+    end
   else
     check_number(item.x, "layer.x", 2)
     check_number(item.y, "layer.y", 2)
