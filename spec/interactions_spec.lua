@@ -1289,6 +1289,54 @@ describe("garbage", function()
   end)
 end)
 
+describe("frame contacts' broad phase", function()
+  it("allocates nothing with sensors found through the hash, sensors moved, the axis "
+    .. "turning and every actor teleported", function()
+    local world = budge.new_world({cell_size = 32})
+    local sensors, actors = {}, {}
+    for i = 1, 300 do sensors[i] = world:add_sensor(box((i * 37) % 600, (i * 53) % 600, 8, 8)) end
+    local function filter(_, other) return other.bullet and "cross" or nil end
+    for i = 1, 40 do
+      local actor = world:add_actor(box(i * 13, i * 11, 10, 10))
+      if i % 2 == 0 then actor.filter = filter end
+      if i % 3 == 0 then actor.bullet = true end
+      actors[i] = actor
+    end
+    local out = {}
+    local function frame(f)
+      local tall = f % 40 < 20 -- (a column, then a row: the prune axis turns)
+      for i = 1, #actors do
+        local actor = actors[i]
+        if f % 10 == 0 then -- everyone teleported: the order is sorted again by merging
+          actor.x, actor.y = tall and (i * 7) % 30 or (i * 97) % 2000,
+            tall and (i * 97) % 2000 or (i * 7) % 30
+          world:update(actor)
+        end
+        world:move(actor, ((i + f) % 17) - 8, ((i * 3 + f) % 17) - 8)
+      end
+      for i = 1, 12 do -- a few sensors moved (swept apart from the others)
+        local sensor = sensors[(f * 7 + i * 13) % #sensors + 1]
+        sensor.x = sensor.x + ((f + i) % 2 == 0 and 3 or -3)
+        world:update(sensor)
+      end
+      world:contacts(out)
+    end
+    local function reset() -- (the sensors too: drifting, they would enter new hash cells)
+      for i = 1, #actors do actors[i].x, actors[i].y = i * 13, i * 11; world:update(actors[i]) end
+      for i = 1, #sensors do
+        sensors[i].x, sensors[i].y = (i * 37) % 600, (i * 53) % 600
+        world:update(sensors[i])
+      end
+    end
+    local found = 0
+    for f = 1, 40 do frame(f); found = found + #out end
+    assert.is_true(found > 40, "found " .. found)
+    local bytes = garbage.measure(frame, 200, {jit_off = true, reset = reset,
+      warm = function() for _ = 1, 3 do reset(); for f = 1, 200 do frame(f) end end end})
+    assert.equal(0, bytes)
+  end)
+end)
+
 describe("what the packed solid cells and the sensor pre-check must not change", function()
   it("a solid's new wall_type (world:update) is what the next move meets", function()
     for _, count in ipairs({1, 20}) do -- (a hash of a few solids is scanned whole)
