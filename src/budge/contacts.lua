@@ -163,14 +163,17 @@ end
 
 -- Sorts a frame order, order[1..n], of which the first `kept` were in order at the last
 -- call (refresh): those by insertion while they are nearly in order still (most frames),
--- by merge_sort (the same order) once the insertion has moved them more than a few
--- places each (the axis changed, a crowd reshuffled); the rest (added since) by
--- merge_sort, then merged in: cost linear in the frame order, and n log n in what was
--- added. (A tenth of 16000 actors replaced each frame, anywhere: 1131 ms per call on Lua
--- 5.4 by insertion alone, 80-95 ms so, most of it the passes over the 16000; measured
--- with interactions_spec's "a tenth of the actors replaced" scene, 2026-12-06.)
+-- by merge_sort (the same order) once the insertion has moved them more places than
+-- there are of them (the axis changed, a crowd reshuffled, bullets fired again: at most
+-- that much work lost before the merge sort); the rest (added since) by merge_sort, then
+-- merged in. Linear in the frame order when little moved, n log n at worst. (A tenth of
+-- 16000 actors replaced each frame, anywhere: 1111 ms per call on Lua 5.4 by insertion
+-- alone, 80-95 ms so, most of it the passes over the 16000: `lua5.4 bench/crowds.lua`.
+-- bench/contacts.lua's scene, interpreter instructions per actor per call on Lua 5.4:
+-- with a budget of 4, 2, 1 or 0 moves a record before the merge sort 599, 571, 558 and
+-- 545; 1 keeps the insertion for orders that did not change much, 2026-12-06.)
 local function sort_order(world, order, n, kept)
-  if not insertion(order, 1, kept, 4 * kept + 64) then
+  if not insertion(order, 1, kept, kept + 64) then
     merge_sort(order, 1, kept, world._frame_scratch)
   end
   if n > kept then
@@ -337,7 +340,10 @@ local function sweep(world, n, one, n1, two, n2, actors)
     while k <= last do
       local other = list[k]
       if other._s0 >= right then break end
-      if min(other._s1 - low, bottom - other._o0, other._o1 - top) > 0 then
+      local near -- (the two overlap across the axis, and along it from this side)
+      if BRANCH_FREE then near = min(other._s1 - low, bottom - other._o0, other._o1 - top) > 0
+      else near = low < other._s1 and other._o0 < bottom and top < other._o1 end
+      if near then
         local a, b = other, record
         if from_one then a, b = record, other end
         local enter, exit = frame_overlap(a, b)
