@@ -307,7 +307,7 @@ local function report(world, n, a, b, actors, enter, exit)
   end
   -- (a pair of actors with filters comes up twice, once from each: kept from the one
   -- added first)
-  if a == b or (b._frame_filtered == world._frame_stamp and b.id < a.id) then return n end
+  if b._frame_filtered == world._frame_stamp and b.id < a.id then return n end
   local first, second = a, b
   if b.id < a.id then first, second = b, a end
   if wants(first, second) then
@@ -343,7 +343,7 @@ local function sweep(world, n, one, n1, two, n2, actors)
       local near -- (the two overlap across the axis, and along it from this side)
       if BRANCH_FREE then near = min(other._s1 - low, bottom - other._o0, other._o1 - top) > 0
       else near = low < other._s1 and other._o0 < bottom and top < other._o1 end
-      if near then
+      if near and other ~= record then -- (an actor with a filter is in both lists)
         local a, b = other, record
         if from_one then a, b = record, other end
         local enter, exit = frame_overlap(a, b)
