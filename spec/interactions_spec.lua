@@ -1337,6 +1337,31 @@ describe("frame contacts' broad phase", function()
   end)
 end)
 
+describe("frame contacts' moved sensors", function()
+  it("are not kept once removed, in a game that never calls world:contacts", function()
+    -- world:update puts a moved sensor on a list that world:contacts empties; a game that
+    -- never calls it, and adds, moves and removes sensors (bullets), must not grow it
+    local world = budge.new_world()
+    local keep = world:add_sensor(box(0, 0, 4, 4)) -- one that stays, moved every frame
+    for frame = 1, 2000 do
+      local shot = world:add_sensor(box(frame, 0, 2, 2))
+      shot.x = shot.x + 5
+      world:update(shot)
+      keep.x = frame % 7
+      world:update(keep)
+      world:remove(shot)
+    end
+    local moved = world._moved_sensors -- (white box: the list itself)
+    assert.is_true(#moved <= 4, "moved list of " .. #moved)
+    assert.are.equal(keep, moved[1].item)
+    -- and contacts still sweeps the one that stayed from where it began
+    local runner = world:add_actor(box(-20, 0, 10, 4))
+    world:move(runner, 30, 0)
+    local out, n = world:contacts()
+    assert.are.same({1, runner, keep}, {n, out[1] and out[1].item, out[1] and out[1].other})
+  end)
+end)
+
 describe("what the packed solid cells and the sensor pre-check must not change", function()
   it("a solid's new wall_type (world:update) is what the next move meets", function()
     for _, count in ipairs({1, 20}) do -- (a hash of a few solids is scanned whole)

@@ -81,6 +81,14 @@ function actors.remove(world, record)
   last.index = index
   list[count] = nil
   record.index = nil
+  if record._frame_moved then -- on the moved sensors' list (world:update) until contacts
+    local moved, dead = world._moved_sensors, world._moved_dead + 1
+    if dead * 2 > #moved then -- mostly gone: kept short for a game that never calls contacts
+      actors.prune_moved(moved)
+      dead = 0
+    end
+    world._moved_dead = dead
+  end
   if record[5] == "actor" then -- the last actor's slot moves into the gap, its mark too
     -- (a record left in _stale has its index: rehash finds its new slot, and skips this one;
     -- the cells of the moved actors are brought up to date at the next query, as before)
@@ -93,6 +101,25 @@ function actors.remove(world, record)
     world._last_at = from - 6
     if last ~= record then world._slot_of[last.item] = index end
   end
+end
+
+---Drops from the world's list of moved sensors (World:update; contacts.lua) those no
+---longer in the world, in place; returns how many stay.
+---@param moved budge.Record[]
+---@return integer kept
+function actors.prune_moved(moved)
+  local kept = 0
+  for i = 1, #moved do
+    local record = moved[i]
+    moved[i] = nil
+    if record.index ~= nil and not record.removed then
+      kept = kept + 1
+      moved[kept] = record
+    else
+      record._frame_moved = nil
+    end
+  end
+  return kept
 end
 
 ---Copies the actor's size (read after a move) into the world's copy by slot, if it is

@@ -17,6 +17,7 @@
 
 local here = (...):match("^(.*)%.[^%.]+$")
 local hits = require(here .. ".hits")
+local prune_moved = require(here .. ".actors").prune_moved
 
 local response_of, CROSS = hits.response, hits.CROSS
 local sort, HUGE, min, max = table.sort, math.huge, math.min, math.max
@@ -212,22 +213,6 @@ local function refresh(order, list, stamp)
   return kept, old
 end
 
--- Drops from the moved sensors' list those no longer in the world; returns how many stay.
-local function still_moved(moved)
-  local kept = 0
-  for i = 1, #moved do
-    local record = moved[i]
-    moved[i] = nil
-    if record.index ~= nil and not record.removed then
-      kept = kept + 1
-      moved[kept] = record
-    else
-      record._frame_moved = nil
-    end
-  end
-  return kept
-end
-
 -- Computes the box each of order[1..n] swept in the frame: in x and y (_sx0 ..), and
 -- along the axis the orders are sorted by (_s0, _s1) and across it (_o0, _o1); adds to
 -- `stats` the sums of the swept widths and heights and the least and most of their left
@@ -395,7 +380,7 @@ function contacts.find(world)
   stats[1], stats[2], stats[3], stats[4], stats[5], stats[6] = 0, 0, HUGE, -HUGE, HUGE, -HUGE
   local order, moved = world._frame_order, world._moved_sensors
   local n_actors, old_actors = refresh(order, world._actor_list, stamp)
-  local n_moved = still_moved(moved)
+  local n_moved = prune_moved(moved)
   -- the sensors swept with the actors: all of them while they are few beside the actors,
   -- else those moved in the frame (meet_still finds the others in the sensor hash)
   local sensors, n_sensors, old_sensors = world._frame_sensor_order
@@ -455,6 +440,7 @@ function contacts.finish(world, out)
     moved[i] = nil
     record._fx, record._fy, record._frame_moved = record[1], record[2], nil
   end
+  world._moved_dead = 0
   -- (sorted here, in the pool's own range: table.sort sees exactly the n records)
   local sorted = world._contact_sorted
   for i = 1, n do sorted[i] = pool[i] end

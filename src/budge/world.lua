@@ -147,6 +147,7 @@ local world = {}
 ---@field package _frame_order budge.Record[] the actors, by their frame's sweep (contacts.lua)
 ---@field package _frame_sensor_order budge.Record[] the sensors likewise, while swept with the actors
 ---@field package _moved_sensors budge.Record[] the sensors world:update moved since the last world:contacts
+---@field package _moved_dead integer how many on that list were removed from the world since
 ---@field package _frame_found budge.Record[] scratch: the sensors near an actor
 ---@field package _frame_filtered_list budge.Record[] scratch: the actors with a filter
 ---@field package _frame_scratch budge.Record[] scratch of the merge sort
@@ -204,7 +205,8 @@ function world.new_world(opts)
     _near = {}, _crushed = {}, _n_crushed = 0, _crush_stamp = 0,
     _crush_lists = {}, _crush_depth = 0,
     _busy = false, _pending = {}, _n_pending = 0, _pending_actors = 0, _pending_layers = 0,
-    _frame_order = {}, _frame_sensor_order = {}, _moved_sensors = {}, _frame_found = {}, _frame_filtered_list = {},
+    _frame_order = {}, _frame_sensor_order = {}, _moved_sensors = {}, _moved_dead = 0,
+    _frame_found = {}, _frame_filtered_list = {},
     _frame_scratch = {}, _frame_stats = {0, 0, 0, 0, 0, 0}, _frame_axis = 1,
     _frame_stamp = 0, _contact_pool = {}, _contact_sorted = {}, _n_contacts = 0,
   }, World)
