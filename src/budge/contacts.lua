@@ -358,7 +358,11 @@ local function meet_still(world, n, order, n_actors)
       for k = 1, count do
         local sensor = found[k]
         found[k] = nil
-        if not sensor._frame_moved then
+        -- (the boxes' test as the sweep's, first: frame_overlap's rounded times can say
+        -- two boxes that only touch at the frame's end overlap an ulp before it)
+        local sx, sy = sensor[1], sensor[2]
+        if not sensor._frame_moved and x0 < sx + sensor[3] and sx < x1
+          and y0 < sy + sensor[4] and sy < y1 then
           local enter, exit = frame_overlap(actor, sensor)
           if enter ~= nil then n = report(world, n, actor, sensor, false, enter, exit) end
         end
