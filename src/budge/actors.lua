@@ -116,7 +116,7 @@ function actors.prune_moved(moved)
       kept = kept + 1
       moved[kept] = record
     else
-      record._frame_moved = nil
+      record._frame_moved = false
     end
   end
   return kept

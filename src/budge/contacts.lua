@@ -442,7 +442,7 @@ function contacts.finish(world, out)
   for i = 1, #moved do
     local record = moved[i]
     moved[i] = nil
-    record._fx, record._fy, record._frame_moved = record[1], record[2], nil
+    record._fx, record._fy, record._frame_moved = record[1], record[2], false
   end
   world._moved_dead = 0
   -- (sorted here, in the pool's own range: table.sort sees exactly the n records)

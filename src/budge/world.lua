@@ -83,7 +83,7 @@ local world = {}
 ---@field package _o0? number and across it
 ---@field package _o1? number
 ---@field package _frame_filtered? integer the contacts call that found it with a filter
----@field package _frame_moved? boolean a sensor on the world's moved list
+---@field package _frame_moved? boolean a sensor on the world's moved list (true)
 ---@field package _frame_in? integer the contacts call that last saw it in the world
 ---@field package _mark? number budge.bump's mark: which move met it, or which leg's filter
 ---ignored it (bump.lua, plan_move)
@@ -220,8 +220,18 @@ local function new_record(self, item, kind)
   -- packed cells' last column and row, budge.bump's mark (made here, so that the array
   -- part never grows: LuaJIT keeps an array part of up to 15 slots made by the
   -- constructor beside the table's header, where a move's hit reads [6] and [7])
-  local record = {0, 0, 0, 0, kind, id, item, 0, 0, 0, 0, 0, 0, 0,
-    item = item, id = id, oneway = false, _stamp = 0}
+  local record
+  if kind == ACTOR or kind == SENSOR then -- (and world:contacts' fields, made here: a
+    -- table's hash part grown later, at its first contacts call, was 400 bytes more a
+    -- thing added, 2026-12-06)
+    record = {0, 0, 0, 0, kind, id, item, 0, 0, 0, 0, 0, 0, 0,
+      item = item, id = id, oneway = false, _stamp = 0, _fx = 0, _fy = 0, _frame_in = 0,
+      _sx0 = 0, _sx1 = 0, _sy0 = 0, _sy1 = 0, _s0 = 0, _s1 = 0, _o0 = 0, _o1 = 0,
+      _frame_filtered = 0, _frame_moved = false}
+  else
+    record = {0, 0, 0, 0, kind, id, item, 0, 0, 0, 0, 0, 0, 0,
+      item = item, id = id, oneway = false, _stamp = 0}
+  end
   self._records[item] = record
   return record
 end
