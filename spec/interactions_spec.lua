@@ -1290,6 +1290,35 @@ describe("garbage", function()
 end)
 
 describe("frame contacts' broad phase", function()
+  it("meets no more what a filter removed earlier in the call, as a move does", function()
+    -- two players on one coin: the first asked collects it (removes it); the second does
+    -- not get it too. The same with the coin found through the hash (5 sensors to an actor)
+    for _, extra in ipairs({0, 12}) do
+      local world = budge.new_world()
+      local coin = world:add_sensor(box(20, 0, 6, 6))
+      for i = 1, extra do world:add_sensor(box(5000 + 20 * i, 5000, 2, 2)) end
+      local asked, collecting = 0, false
+      local function collect(_, other) -- (during world:contacts: the moves ask it too)
+        if other == coin and collecting then
+          asked = asked + 1
+          if world:has(coin) then world:remove(coin) end
+        end
+        return other == coin and "cross" or nil
+      end
+      local one = world:add_actor(box(0, 0, 10, 10))
+      local two = world:add_actor(box(40, 0, 10, 10))
+      one.filter, two.filter = collect, collect
+      world:contacts()
+      world:move(one, 16, 0)
+      world:move(two, -16, 0)
+      collecting = true
+      local out, n = world:contacts()
+      assert.are.same({1, 1}, {n, asked}, "with " .. extra .. " more sensors")
+      assert.are.equal(coin, out[1].other)
+      assert.is_false(world:has(coin))
+    end
+  end)
+
   it("reports no actor that ends only touching a sensor, swept with it or found in the "
     .. "hash", function()
     -- The frame's times are rounded: an actor whose right side ends exactly on a sensor's

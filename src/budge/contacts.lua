@@ -5,14 +5,15 @@
 -- other between two calls whatever order the game moved them in.
 --
 -- Broad phase: sweep and prune over the boxes each swept in its frame, along the axis
--- they spread out along the more (a tall level's coins prune along y), in orders kept
--- from call to call (an insertion sort of an order that barely changes is nearly linear;
--- a merge sort when it changed much). Only pairs that can be reported are walked: an
--- actor and a sensor, and an actor with a filter and any actor (never two sensors, nor
--- two actors without filters). The sensors are swept with the actors while there are
--- few of them beside the actors; past that, only those moved in the frame are, and the
--- actors find the others in the sensor hash, so that sensors no actor comes near cost
--- nothing. Narrow phase: the two motions relative to each other, one slab clip.
+-- they spread out along the more (a tall level's coins prune along y). The actors' order
+-- is kept from call to call (an insertion sort of an order that barely changes is nearly
+-- linear; a merge sort when it changed much). Only pairs that can be reported are
+-- walked: an actor and a sensor, and an actor with a filter and any actor (never two
+-- sensors, nor two actors without filters). The sensors are swept with the actors, in
+-- an order kept likewise, while there are at most four to an actor; past that, only
+-- those world:update moved in the frame are (sorted afresh each call), and the actors
+-- find the others in the sensor hash, so that sensors no actor comes near cost nothing.
+-- Narrow phase: the two motions relative to each other, one slab clip.
 -- Nothing here iterates with pairs(); the records are the world's, reused.
 
 local here = (...):match("^(.*)%.[^%.]+$")
@@ -283,6 +284,8 @@ end
 -- LuaJIT shaping: left to the interpreter, as move.lua's filtered phases (the filters'
 -- answers are paths of their own), and reached only by pairs that do overlap.
 local function report(world, n, a, b, actors, enter, exit)
+  -- (what a filter removed earlier in the call is not met again, as in a move)
+  if a.removed or b.removed then return n end
   if not actors then
     if wants(a, b) then
       n = n + 1
