@@ -343,8 +343,8 @@ local function sweep(world, n, one, n1, two, n2, actors)
   return n
 end
 
--- How many sensors per actor world:contacts sweeps with the actors at most; past that,
--- the sensors that did not move are found in the sensor hash (meet_still).
+-- How many sensors that did not move in the frame world:contacts sweeps with the actors
+-- at most, per actor; past that, it finds those in the sensor hash (meet_still).
 local SWEPT_SENSORS = 4
 
 -- The actors against the sensors that stayed where they were in the frame (every sensor
@@ -388,10 +388,12 @@ function contacts.find(world)
   local order, moved = world._frame_order, world._moved_sensors
   local n_actors, old_actors = refresh(order, world._actor_list, stamp)
   local n_moved = prune_moved(moved)
-  -- the sensors swept with the actors: all of them while they are few beside the actors,
-  -- else those moved in the frame (meet_still finds the others in the sensor hash)
+  -- the sensors swept with the actors: all of them while those that stayed put are few
+  -- beside the actors, else those moved in the frame (meet_still finds the others in the
+  -- sensor hash; sensors that all move are swept in an order kept from call to call, not
+  -- sorted afresh each call from the moved list)
   local sensors, n_sensors, old_sensors = world._frame_sensor_order
-  if world._sensor_count <= SWEPT_SENSORS * n_actors then
+  if world._sensor_count - n_moved <= SWEPT_SENSORS * n_actors then
     n_sensors, old_sensors = refresh(sensors, world._sensor_list, stamp)
   else
     for i = #sensors, 1, -1 do sensors[i] = nil end
