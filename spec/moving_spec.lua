@@ -185,6 +185,40 @@ describe("world:move_solid", function()
     assert.is_true(rounded > 100 and crushed > 50, rounded .. " " .. crushed) -- not vacuous
   end)
 
+  it("pushes an actor with no width or no height lying on its leading face, as one "
+    .. "with a size, and crushes it only against a wall", function()
+    -- (an actor of width 0 on the face overlaps nothing there; the band's tests on the
+    -- actor's edges were strict, so the face passed over it and it was left inside, then
+    -- reported crushed with nothing behind it: found by review, 2026-12-06)
+    local cases = { -- the actor's box, the solid's move, where the actor ends
+      {{10, 3, 0, 4}, 5, 0, 15, 3}, {{0, 3, 0, 4}, -5, 0, -5, 3},
+      {{3, 10, 4, 0}, 0, 5, 3, 15}, {{10, 5, 0, 0}, 5, 0, 15, 5},
+      {{0, 5, 0, 0}, -3, 0, -3, 5}, {{5, 10, 0, 0}, 0, 2.5, 5, 12.5},
+    }
+    for i, case in ipairs(cases) do
+      for _, walled in ipairs({false, true}) do
+        local world = budge.new_world()
+        local solid = world:add_solid(box(0, 0, 10, 10))
+        local actor = world:add_actor(box(case[1][1], case[1][2], case[1][3], case[1][4]))
+        local wall
+        if walled then -- its near face half a pixel short of where the push sets it
+          local wx, wy = case[4] - 8, case[5] - 8 -- (across: over the actor)
+          if case[2] > 0 then wx = case[4] - 0.5 elseif case[2] < 0 then wx = case[4] - 15.5 end
+          if case[3] > 0 then wy = case[5] - 0.5 end
+          wall = world:add_solid(box(wx, wy, 16, 16))
+        end
+        local n, crushed = world:move_solid(solid, case[2], case[3])
+        if walled then
+          assert.are.same({1, actor}, {n, crushed[1]}, "case " .. i)
+          assert.is_false(actor.x < wall.x + wall.width and wall.x < actor.x + actor.width
+            and actor.y < wall.y + wall.height and wall.y < actor.y + actor.height)
+        else
+          assert.are.same({0, case[4], case[5]}, {n, actor.x, actor.y}, "case " .. i)
+        end
+      end
+    end
+  end)
+
   it("sets a pushed actor on its target when the push's step rounds past it (no step "
     .. "back against the push: out of a wall it overlaps, up through a oneway top)", function()
     local before = require("budge.sweep").before

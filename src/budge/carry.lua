@@ -133,11 +133,13 @@ local function solid_phase(world, solid, oneway, is_x, delta, ride_stamp)
       local target
       if is_x then
         -- the band swept along x ahead of the leading face, for actors overlapping it
-        -- strictly on y that reach out past that face
+        -- strictly on y that reach out past that face, or lie on it with no width (such
+        -- an actor overlaps nothing there, and the face would pass over it)
         if not oneway and ay < y + height and y < ay + ah then
-          if delta > 0 and ax + aw > x + width and ax < x + delta + width then
+          if delta > 0 and (ax + aw > x + width or ax >= x + width)
+            and ax < x + delta + width then
             target = x + delta + width -- (the solid's far side where it ends)
-          elseif delta < 0 and ax < x and ax + aw > x + delta then
+          elseif delta < 0 and (ax < x or ax + aw <= x) and ax + aw > x + delta then
             target = before(x + delta, aw)
           end
         end
@@ -148,10 +150,10 @@ local function solid_phase(world, solid, oneway, is_x, delta, ride_stamp)
         end
       else
         if ax < x + width and x < ax + aw then
-          if delta < 0 and ay < y and ay + ah > y + delta
+          if delta < 0 and (ay < y or ay + ah <= y) and ay + ah > y + delta
             and (not oneway or ay + ah <= y) then
             target = before(y + delta, ah)
-          elseif delta > 0 and not oneway and ay + ah > y + height
+          elseif delta > 0 and not oneway and (ay + ah > y + height or ay >= y + height)
             and ay < y + delta + height then
             target = y + delta + height
           end
