@@ -199,4 +199,45 @@ describe("budge.layer's axis scan", function()
     world:update(handle)
     assert.are.same({116, 32}, move(16, 30))
   end)
+
+  it("is left as it was by an is_solid that raises part-way through world:update; the "
+    .. "next update reads the grid, with no garbage after the first", function()
+    -- (read in place, the kinds read before the error were new and the reach table old:
+    -- a fall went through the new block in a world of tiles alone and stopped on it with
+    -- a solid box elsewhere, and a query found it; found by review, 2026-12-06)
+    local budge = require("budge")
+    local garbage = require("fixtures.garbage")
+    for _, boxed in ipairs({false, true}) do
+      local world = budge.new_world()
+      local grid = {{0, 0, 0, 0}, {0, 0, 0, 0}, {1, 1, 1, 1}}
+      local level = world:add_tiles(grid, 16, 16, {is_solid = function(id)
+        if type(id) ~= "number" then error("unknown tile id " .. tostring(id), 0) end
+        return id >= 1
+      end})
+      if boxed then world:add_solid({x = 1000, y = 1000, width = 1, height = 1}) end
+      local player = world:add_actor({x = 0, y = 0, width = 8, height = 8})
+      local out = {}
+      local function fall()
+        player.x, player.y = 0, 0
+        world:update(player)
+        local _, y = world:move(player, 0, 40)
+        local _, above = world:query_point(4, 20, out)
+        local _, floor = world:query_point(4, 40, out)
+        return {y, above, floor}
+      end
+      grid[2][1], grid[2][4] = 1, "door" -- a new block under the player, a bad id after it
+      assert.are.same({false, "unknown tile id door"}, {pcall(world.update, world, level)})
+      assert.are.same({24, 0, 1}, fall()) -- the old grid: onto the floor
+      grid[2][4] = 0
+      world:update(level)
+      assert.are.same({8, 1, 1}, fall()) -- onto the new block
+      local function flip(i)
+        grid[2][1] = i % 2
+        world:update(level)
+      end
+      local bytes = garbage.measure(flip, 20,
+        {jit_off = true, warm = function() for i = 1, 3 do flip(i) end end})
+      assert.are.equal(0, bytes)
+    end
+  end)
 end)

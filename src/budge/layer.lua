@@ -32,6 +32,8 @@ local EMPTY, SOLID, ONEWAY = tilegrid.EMPTY, tilegrid.SOLID, tilegrid.ONEWAY
 ---@field grid table the caller's grid, as given (reread by world:update)
 ---@field package _kinds integer[] EMPTY, SOLID or ONEWAY at (row - 1) * cols + col
 ---@field package _ids any[] the grid's id of each non-empty tile, as read (filters get it)
+---@field package _spare_kinds? integer[] the arrays layer.reread reads into, then swaps
+---@field package _spare_ids? any[]
 ---@field package _inverse_width number 1 / tile_width
 ---@field package _inverse_height number 1 / tile_height
 ---@field package _width? integer opts.width, for a flat grid
@@ -118,7 +120,13 @@ function layer.reread(tiles, level)
     error(format("grid changed size from %dx%d to %dx%d: remove the layer and add it again",
       tiles.cols, tiles.rows, cols, rows), level + 1)
   end
-  read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds, tiles._ids)
+  -- into the spare arrays, swapped in once all is read: an error that is_solid or
+  -- is_oneway raises part-way leaves the layer as it was (read in place, the kinds it had
+  -- read were new and the reach table old, so a move and a query disagreed)
+  local kinds, ids = tiles._spare_kinds or {}, tiles._spare_ids or {}
+  read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, kinds, ids)
+  tiles._spare_kinds, tiles._spare_ids = tiles._kinds, tiles._ids
+  tiles._kinds, tiles._ids = kinds, ids
   build_reach(tiles)
 end
 
