@@ -505,6 +505,25 @@ describe("the world's range", function()
     assert.equal(2 ^ 40, budge.new_world({cell_size = 2 ^ 20}).range)
   end)
 
+  it("stops a move of 8e9 px at the wall it meets, its numbers integers or floats, by "
+    .. "every method", function()
+    -- (swept's last step, "never further than asked", tested the sign of a product of
+    -- two distances: with Lua 5.3+ integers, 8e9 * -4e9 wrapped around to a positive
+    -- number, and the move ended at its target past the wall; found by review, 2026-12-06)
+    local exact = math.tointeger or function(v) return v end -- (5.1, 5.2, LuaJIT: floats)
+    for _, method in ipairs({"swept", "axis_sweep"}) do
+      for _, convert in ipairs({exact, function(v) return v + 0.0 end}) do
+        local world = budge.new_world({cell_size = 256}) -- (range 2^32 px)
+        world:add_solid(box(0, 0, 16, 64))
+        local ship = world:add_actor(box(convert(-4000000000), convert(10), 10, 10))
+        local x, y = world:move(ship, convert(8000000000), convert(0), method)
+        assert.same({-10, 10}, {x, y}, method)
+        x, y = world:move(ship, convert(-4000000000), convert(0), method) -- and back
+        assert.same({-4000000010, 10}, {x, y}, method)
+      end
+    end
+  end)
+
   it("refuses integer moves that wrap around on Lua 5.3+", function()
     -- (math.maxinteger - 5 + 10 wraps to a negative integer: the far side alone passed)
     local huge = rawget(math, "maxinteger")

@@ -937,9 +937,12 @@ local function move_swept(world, actor, dx, dy, filter)
     if blocked_y then goal_y = y + dy end
   end
   -- the slides' pieces, each rounded, can add up to an ulp more than the move: never
-  -- further than asked
-  if (target_x - actor.x) * (x - target_x) > 0 then x = target_x end
-  if (target_y - actor.y) * (y - target_y) > 0 then y = target_y end
+  -- further than asked (comparisons, not the sign of a product: with Lua 5.3+ integers a
+  -- product of two distances over about 3e9 wraps around, and a move of 8e9 px through
+  -- a wall ended at its target; a float product of tiny ones rounds to 0)
+  local x0, y0 = actor.x, actor.y
+  if (target_x > x0 and x > target_x) or (target_x < x0 and x < target_x) then x = target_x end
+  if (target_y > y0 and y > target_y) or (target_y < y0 and y < target_y) then y = target_y end
   probe.actor, probe.filter = nil, nil
   actor.x, actor.y = x, y
 end
