@@ -497,7 +497,7 @@ describe("the world's range", function()
     local actor = world:add_actor(box(0, 0, 8, 8))
     assert.has_error(function() world:move(actor, 1.7e308, 0) end,
       "dx must keep the actor within this world's range, -1073741824 to 1073741824 (2^24 cells "
-      .. "of 64 px, at most 2^40 px), got 1.7e+308")
+      .. "of 64 px, at most 2^40 px), got 1.7e+308 (from 0 to 1.7e+308, size 8)")
     assert.same({0, 0}, {actor.x, actor.y})
     assert.has_error(function() world:query_rect(1e300, 0, 1, 1) end,
       "x must keep the rectangle within this world's range, -1073741824 to 1073741824 (2^24 "
@@ -505,12 +505,43 @@ describe("the world's range", function()
     assert.equal(2 ^ 40, budge.new_world({cell_size = 2 ^ 20}).range)
   end)
 
+  it("names the argument that takes a layer or a move out of it, with its own value, at the "
+    .. "caller's line, and changes nothing", function()
+    -- (a map too long was blamed on opts.x, not given, "got 0"; a move named dx with x + dx
+    -- as its value; found by review, 2026-12-06)
+    local world = budge.new_world({cell_size = 1}) -- (range 2^24 px)
+    local row = {}
+    for col = 1, 20000 do row[col] = 1 end
+    local ok, err = pcall(function() world:add_tiles({row}, 1024, 16) end)
+    assert.is_false(ok)
+    assert.equal("spec/hostile_spec.lua:" .. (debug.getinfo(1, "l").currentline - 2)
+      .. ": tile_width must keep the layer within this world's range, -16777216 to 16777216 "
+      .. "(2^24 cells of 1 px, at most 2^40 px), got 1024 (20000 columns from 0 reach "
+      .. "20480000)", err)
+    assert.has_error(function() world:add_tiles({{1}, {1}}, 16, 2 ^ 24, {x = 5}) end,
+      "tile_height must keep the layer within this world's range, -16777216 to 16777216 "
+      .. "(2^24 cells of 1 px, at most 2^40 px), got 16777216 (2 rows from 0 reach 33554432)")
+    assert.has_error(function() world:add_tiles({{1}}, 16, 16, {x = -2 ^ 25}) end,
+      "opts.x must keep the layer within this world's range, -16777216 to 16777216 "
+      .. "(2^24 cells of 1 px, at most 2^40 px), got -33554432")
+    local actor = world:add_actor(box(100, 0, 10, 10))
+    local solid = world:add_solid(box(0, 50, 10, 10))
+    assert.has_error(function() world:move(actor, 2 ^ 24, 0) end,
+      "dx must keep the actor within this world's range, -16777216 to 16777216 (2^24 cells "
+      .. "of 1 px, at most 2^40 px), got 16777216 (from 100 to 16777316, size 10)")
+    assert.has_error(function() world:move_solid(solid, 0, -2 ^ 25) end,
+      "dy must keep the solid within this world's range, -16777216 to 16777216 (2^24 cells "
+      .. "of 1 px, at most 2^40 px), got -33554432 (from 50 to -33554382, size 10)")
+    assert.same({100, 0, 0, 50, 2}, {actor.x, actor.y, solid.x, solid.y,
+      select(2, world:query_rect(-1e6, -1e6, 2e6, 2e6))})
+  end)
+
   it("stops a move of 8e9 px at the wall it meets, its numbers integers or floats, by "
     .. "every method", function()
     -- (swept's last step, "never further than asked", tested the sign of a product of
     -- two distances: with Lua 5.3+ integers, 8e9 * -4e9 wrapped around to a positive
     -- number, and the move ended at its target past the wall; found by review, 2026-12-06)
-    local exact = math.tointeger or function(v) return v end -- (5.1, 5.2, LuaJIT: floats)
+    local exact = rawget(math, "tointeger") or function(v) return v end -- (5.1, 5.2, LuaJIT)
     for _, method in ipairs({"swept", "axis_sweep"}) do
       for _, convert in ipairs({exact, function(v) return v + 0.0 end}) do
         local world = budge.new_world({cell_size = 256}) -- (range 2^32 px)
@@ -536,7 +567,8 @@ describe("the world's range", function()
     local actor = world:add_actor(box(0, 0, 10, 10))
     local ok, err = pcall(world.move, world, actor, huge - 5, 0)
     assert.is_false(ok)
-    assert.matches("dx " .. message("actor"), err)
+    assert.matches("dx " .. message("actor"):gsub("%$$", "")
+      .. " %(from 0 to 9.2233720368548e%+18, size 10%)$", err)
     ok, err = pcall(world.add_solid, world, box(huge - 5, 0, 10, 10))
     assert.is_false(ok)
     assert.matches("box.x " .. message("box"), err)
@@ -564,10 +596,12 @@ describe("the world's range", function()
     assert.has_error(function() world:add_solid(box(1, 0, huge, 10)) end,
       message("box.x", "box", "1"))
     assert.has_error(function() world:add_tiles({{1, 1}}, math.floor(huge / 2), 16, {x = 5}) end,
-      message("opts.x", "layer", "5"))
+      message("tile_width", "layer", "4.6116860184274e+18 (2 columns from 5 reach "
+        .. "9.2233720368548e+18)"))
     local actor = world:add_actor(box(0, 0, 10, 10))
     actor.width = huge
-    assert.has_error(function() world:move(actor, 5, 0) end, message("dx", "actor", "5"))
+    assert.has_error(function() world:move(actor, 5, 0) end,
+      message("dx", "actor", "5 (from 0 to 5, size 9.2233720368548e+18)"))
     actor.width = 10
     assert.has_error(function() world:query_rect(1, 0, huge, 10) end,
       message("x", "rectangle", "1"))

@@ -150,6 +150,50 @@ function entry.check_span(self, low, size, name, what, level)
   end
 end
 
+---Errors (at the caller of the entry) when a displacement `delta` (the argument `name`)
+---takes the span [start, start + size] on one axis out of the world's range, naming the
+---argument's own value, then where it would take the span (as check_span's test, the sums
+---taken in floats: an integer sum wraps around on Lua 5.3+).
+---@param self budge.World
+---@param start number
+---@param delta number
+---@param size number
+---@param name string the argument's name ("dx")
+---@param what string what must stay in range ("the actor")
+---@param level? integer where the error points (default 3: the caller of the entry)
+function entry.check_delta_span(self, start, delta, size, name, what, level)
+  local range, low = self.range, start - 0.0 + delta
+  if low < -range or low > range or low + size > range then
+    error(format("%s must keep %s within this world's range, -%s to %s (2^24 cells of %s "
+      .. "px, at most 2^40 px), got %s (from %s to %s, size %s)", name, what,
+      describe(range), describe(range), describe(self.cell_size), describe(delta),
+      describe(start), describe(low), describe(size)), level or 3)
+  end
+end
+
+---Errors (at the caller of the entry) when a tile layer from `origin` (the argument
+---`origin_name`), `count` tiles of `size` (the argument `size_name`) on one axis, leaves
+---the world's range: its origin named first, then its tile size.
+---@param self budge.World
+---@param origin number
+---@param count integer
+---@param size number
+---@param origin_name string
+---@param size_name string
+---@param unit string "columns" or "rows"
+function entry.check_layer_span(self, origin, count, size, origin_name, size_name, unit)
+  entry.check_span(self, origin, 0, origin_name, "the layer", 4)
+  -- (in floats: an integer product wraps around on Lua 5.3+, see check_span)
+  local far = origin - 0.0 + count * (size - 0.0)
+  if far > self.range then
+    local range = self.range
+    error(format("%s must keep the layer within this world's range, -%s to %s (2^24 cells "
+      .. "of %s px, at most 2^40 px), got %s (%d %s from %s reach %s)", size_name,
+      describe(range), describe(range), describe(self.cell_size), describe(size), count,
+      unit, describe(origin), describe(far)), 3)
+  end
+end
+
 ---A caller's output table, or a new one; errors (at the caller of the entry) for others.
 ---@param out any
 ---@param name string

@@ -40,6 +40,7 @@ local enter, guarded, check_span, check_out = entry.enter, entry.guarded, entry.
 local find_record, refuse_duplicate, abandon_move = entry.find_record, entry.refuse_duplicate,
   entry.abandon_move
 local check_self, check_box_span = entry.check_self, entry.check_box_span
+local check_delta_span, check_layer_span = entry.check_delta_span, entry.check_layer_span
 
 -- The range within which every operation is exact, terminates and does bounded work:
 -- coordinates (x, y, x + width, y + height) within 2^24 cells of the origin either way,
@@ -301,9 +302,8 @@ function World:add_tiles(grid, tile_width, tile_height, opts)
   end
   opts = tilegrid.check_options(tile_width, tile_height, opts, 2)
   local tiles = layer.new(grid, tile_width, tile_height, opts, 2)
-  -- (the sizes in floats: an integer product wraps around on Lua 5.3+, see check_span)
-  check_span(self, tiles.x, tiles.cols * (tile_width - 0.0), "opts.x", "the layer")
-  check_span(self, tiles.y, tiles.rows * (tile_height - 0.0), "opts.y", "the layer")
+  check_layer_span(self, tiles.x, tiles.cols, tile_width, "opts.x", "tile_width", "columns")
+  check_layer_span(self, tiles.y, tiles.rows, tile_height, "opts.y", "tile_height", "rows")
   new_record(self, tiles, TILES)
   solids.add_layer(self, tiles)
   return tiles
@@ -418,8 +418,8 @@ local function check_move(self, actor, dx, dy, method)
   if to_x < -range or to_x > range or to_x - 0.0 + actor.width > range or to_y < -range
     or to_y > range or to_y - 0.0 + actor.height > range then -- (inline: this entry is
     -- hot; see check_span for to_x > range and - 0.0)
-    check_span(self, to_x, actor.width, "dx", "the actor", 4)
-    check_span(self, to_y, actor.height, "dy", "the actor", 4)
+    check_delta_span(self, actor.x, dx, actor.width, "dx", "the actor", 4)
+    check_delta_span(self, actor.y, dy, actor.height, "dy", "the actor", 4)
   end
   local method_entry = METHOD[method == nil and "axis_sweep" or method]
   if method_entry == nil then
@@ -508,8 +508,8 @@ function World:move(actor, dx, dy, method)
     if to_x < -range or to_x > range or to_x - 0.0 + width > range or to_y < -range
       or to_y > range or to_y - 0.0 + height > range then -- (to_x > range, - 0.0: see
       -- check_span)
-      check_span(self, to_x, width, "dx", "the actor")
-      check_span(self, to_y, height, "dy", "the actor")
+      check_delta_span(self, x, dx, width, "dx", "the actor")
+      check_delta_span(self, y, dy, height, "dy", "the actor")
     end
   end
   local method_entry = METHOD[method == nil and "axis_sweep" or method]
@@ -588,8 +588,8 @@ function World:move_solid(solid, dx, dy)
   check_box(solid, "solid", 2)
   check_number(dx, "dx", 2)
   check_number(dy, "dy", 2)
-  check_span(self, solid.x + dx, solid.width, "dx", "the solid")
-  check_span(self, solid.y + dy, solid.height, "dy", "the solid")
+  check_delta_span(self, solid.x, dx, solid.width, "dx", "the solid")
+  check_delta_span(self, solid.y, dy, solid.height, "dy", "the solid")
   local n, crushed = carry.run(self, record, dx, dy) -- (no tail call: errors name your line)
   return n, crushed
 end
@@ -702,8 +702,8 @@ function World:query_sweep(x, y, width, height, dx, dy, out, out_t, filter)
   check_number(dy, "dy", 2)
   check_span(self, x, width, "x", "the box")
   check_span(self, y, height, "y", "the box")
-  check_span(self, x + dx, width, "dx", "the box")
-  check_span(self, y + dy, height, "dy", "the box")
+  check_delta_span(self, x, dx, width, "dx", "the box")
+  check_delta_span(self, y, dy, height, "dy", "the box")
   out = check_out(out, "out")
   out_t = check_out(out_t, "out_t")
   check_filter(filter, 2)
