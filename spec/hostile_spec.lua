@@ -536,6 +536,34 @@ describe("the world's range", function()
       select(2, world:query_rect(-1e6, -1e6, 2e6, 2e6))})
   end)
 
+  it("refuses to move or check an actor the game put beyond it without world:update, "
+    .. "naming actor.x or actor.y", function()
+    -- (only the move's end was checked: from 2^62 px back by as much, a move ended inside
+    -- a solid; found by review, 2026-12-06)
+    local world = budge.new_world()
+    world:add_solid(box(0, 0, 16, 16))
+    local actor = world:add_actor(box(20, 0, 10, 10))
+    local message = "actor.%s must keep the actor within this world's range, -1073741824 to "
+      .. "1073741824 (2^24 cells of 64 px, at most 2^40 px), got %s"
+    for _, method in ipairs({"axis_sweep", "swept"}) do
+      actor.x = 2 ^ 62
+      assert.has_error(function() world:move(actor, -2 ^ 62, 0, method) end,
+        message:format("x", "4.6116860184274e+18"))
+      assert.has_error(function() world:move(actor, -2 ^ 62, 0) end,
+        message:format("x", "4.6116860184274e+18"))
+      assert.has_error(function() world:check(actor, -2 ^ 62, 0, method) end,
+        message:format("x", "4.6116860184274e+18"))
+      actor.x, actor.y = 20, 2 ^ 30 - 5 -- (its far side out)
+      assert.has_error(function() world:move(actor, 0, -2 ^ 30) end,
+        message:format("y", "1073741819 (its far side at 1073741829)"))
+      actor.y = 0
+      local x, y = world:move(actor, -100, 0, method) -- (and on: against the solid)
+      assert.same({16, 0, 16, 0}, {x, y, actor.x, actor.y})
+      actor.x = 20
+      world:update(actor)
+    end
+  end)
+
   it("stops a move of 8e9 px at the wall it meets, its numbers integers or floats, by "
     .. "every method", function()
     -- (swept's last step, "never further than asked", tested the sign of a product of
@@ -594,24 +622,24 @@ describe("the world's range", function()
     end
     local world = budge.new_world()
     assert.has_error(function() world:add_solid(box(1, 0, huge, 10)) end,
-      message("box.x", "box", "1"))
+      message("box.x", "box", "1 (its far side at 9.2233720368548e+18)"))
     assert.has_error(function() world:add_tiles({{1, 1}}, math.floor(huge / 2), 16, {x = 5}) end,
       message("tile_width", "layer", "4.6116860184274e+18 (2 columns from 5 reach "
         .. "9.2233720368548e+18)"))
     local actor = world:add_actor(box(0, 0, 10, 10))
     actor.width = huge
-    assert.has_error(function() world:move(actor, 5, 0) end,
-      message("dx", "actor", "5 (from 0 to 5, size 9.2233720368548e+18)"))
+    assert.has_error(function() world:move(actor, 5, 0) end, -- (the width the game set)
+      message("actor.x", "actor", "0 (its far side at 9.2233720368548e+18)"))
     actor.width = 10
     assert.has_error(function() world:query_rect(1, 0, huge, 10) end,
-      message("x", "rectangle", "1"))
+      message("x", "rectangle", "1 (its far side at 9.2233720368548e+18)"))
     assert.has_error(function() world:query_sweep(5, 0, huge, 1, 1, 0) end,
-      message("x", "box", "5"))
+      message("x", "box", "5 (its far side at 9.2233720368548e+18)"))
     local found, count = world:query_rect(-100, -100, 200, 200)
     assert.same({{actor}, 1, 0, 0}, {found, count, actor.x, actor.y})
     local front = bump.newWorld()
     assert.has_error(function() front:add("wide", 1, 0, huge, 10) end,
-      message("x", "rectangle", "1"))
+      message("x", "rectangle", "1 (its far side at 9.2233720368548e+18)"))
     assert.same({false, 0}, {front:hasItem("wide"), front:countItems()})
   end)
 

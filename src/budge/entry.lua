@@ -144,9 +144,12 @@ function entry.check_span(self, low, size, name, what, level)
   -- floats, `low - 0.0 + size`, for a size near it; x - 0.0 is x for every float, -0
   -- too, and an integer's float is exact below 2^53, far past any range)
   if low < -range or low > range or low - 0.0 + size > range then
+    -- (with the far side when it alone leaves the range: the size is at fault)
+    local far = (low < -range or low > range) and "" or format(" (its far side at %s)",
+      describe(low - 0.0 + size))
     error(format("%s must keep %s within this world's range, -%s to %s (2^24 cells of %s "
-      .. "px, at most 2^40 px), got %s", name, what, describe(range), describe(range),
-      describe(self.cell_size), describe(low)), level or 3)
+      .. "px, at most 2^40 px), got %s%s", name, what, describe(range), describe(range),
+      describe(self.cell_size), describe(low), far), level or 3)
   end
 end
 

@@ -412,6 +412,8 @@ local function check_move(self, actor, dx, dy, method)
       describe(actor)), 3)
   end
   check_box(actor, "actor", 3)
+  check_span(self, actor.x, actor.width, "actor.x", "the actor", 4)
+  check_span(self, actor.y, actor.height, "actor.y", "the actor", 4)
   check_number(dx, "dx", 3)
   check_number(dy, "dy", 3)
   local range, to_x, to_y = self.range, actor.x + dx, actor.y + dy
@@ -492,13 +494,19 @@ function World:move(actor, dx, dy, method)
     -- box as the world last checked it, or placed it: actors.lua) is not checked again: four
     -- comparisons instead of four calls to type on Lua 5.x (same command, 5 fresh runs
     -- each, interleaved, 2026-12-02: 1574 ns per move against 1646 with the checks).
+    -- (and the box where the game put it within the world's range, as at its add: a move
+    -- from 9e18 px back into range ended inside a solid, found by review, 2026-12-06)
     local x, y, width, height = actor.x, actor.y, actor.width, actor.height
     if (x ~= abox[at - 4] or y ~= abox[at - 3] or width ~= abox[at - 2]
       or height ~= abox[at - 1])
       and (type(x) ~= "number" or type(y) ~= "number" or type(width) ~= "number"
         or type(height) ~= "number" or x - x ~= 0 or y - y ~= 0 or width - width ~= 0
-        or height - height ~= 0 or width < 0 or height < 0) then
+        or height - height ~= 0 or width < 0 or height < 0 or x < -self.range
+        or x > self.range or x - 0.0 + width > self.range or y < -self.range
+        or y > self.range or y - 0.0 + height > self.range) then
       check_box(actor, "actor", 2)
+      check_span(self, x, width, "actor.x", "the actor", 3)
+      check_span(self, y, height, "actor.y", "the actor", 3)
     end
     if type(dx) ~= "number" or type(dy) ~= "number" or dx - dx ~= 0 or dy - dy ~= 0 then
       check_number(dx, "dx", 2)
