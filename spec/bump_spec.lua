@@ -932,6 +932,99 @@ describe("budge.bump", function()
     end)
   end)
 
+  describe("what a second hostile review found (2026-12-06)", function()
+    it("clears the fields a game wrote into a col before the record is reused", function()
+      -- (a oneway platform's custom response marking `col.didTouch`: jumping up through it
+      -- later reported a landing, the record reused with the game's field in it)
+      local world = bump.newWorld(64)
+      world:addResponse("oneway", function(w, col, x, y, ww, hh, gx, gy, filter)
+        if col.normal.y < 0 and not col.overlaps then
+          col.didTouch = true
+          return bump.responses.slide(w, col, x, y, ww, hh, gx, gy, filter)
+        end
+        return bump.responses.cross(w, col, x, y, ww, hh, gx, gy, filter)
+      end)
+      local function filter() return "oneway" end
+      world:add("platform", 0, 20, 100, 5)
+      world:add("player", 10, 0, 10, 10)
+      local _, y, cols, len = world:move("player", 10, 30, filter)
+      assert.same({10, 1, true, "oneway"}, {y, len, cols[1].didTouch, cols[1].type})
+      cols[1].score, cols[1].slide = 5, "mine" -- (the game's, and one of the col's own)
+      world:update("player", 10, 40)
+      local first = cols[1]
+      _, y, cols, len = world:move("player", 10, -20, filter)
+      assert.equal(first, cols[1]) -- (the same record, reused)
+      assert.same({-20, 1, "oneway", false}, {y, len, cols[1].type, cols[1].overlaps})
+      assert.same({nil, nil, nil}, {cols[1].didTouch, cols[1].score, cols[1].slide})
+      -- a game that writes nothing pays nothing (bump's responses, as functions, make
+      -- tables of their own: the built-in ones by name)
+      local function step(i)
+        world:update("player", 10, i % 2 == 0 and 0 or 40)
+        world:move("player", 10, i % 2 == 0 and 30 or -20)
+      end
+      local bytes = garbage.measure(step, 20,
+        {jit_off = true, warm = function() for i = 1, 4 do step(i) end end})
+      assert.equal(0, bytes)
+      local col = bump.rect.detectCollision(0, 0, 10, 10, 5, 5, 10, 10)
+      assert.same({nil, nil, nil, nil}, {getmetatable(col), col.item, col.other, col.type})
+    end)
+
+    it("calls a custom response for an item the move starts inside, and lets it out toward "
+      .. "the goal the response returns", function()
+      local world = bump.newWorld(64)
+      local calls = {}
+      world:addResponse("hurt", function(w, col, x, y, ww, hh, gx, gy, filter)
+        calls[#calls + 1] = {col.other, col.overlaps, col.type}
+        return bump.responses.cross(w, col, x, y, ww, hh, gx, gy, filter)
+      end)
+      world:addResponse("stop", function(_, col) return col.itemRect.x, col.itemRect.y, {}, 0 end)
+      world:add("lava", 5, 5, 20, 20)
+      world:add("player", 0, 0, 10, 10)
+      local x, y, cols, len = world:move("player", 3, 40, function() return "hurt" end)
+      assert.same({3, 40, 1, "hurt", true}, {x, y, len, cols[1].type, cols[1].overlaps})
+      assert.same({{"lava", true, "hurt"}}, calls)
+      -- (a response that changes the goal: the move goes from where it was toward it, out
+      -- of the lava, never backed out along its move)
+      world:update("player", 0, 0)
+      x, y, cols, len = world:move("player", 3, 40, function() return "stop" end)
+      assert.same({0, 0, 1, "stop"}, {x, y, len, cols[1].type})
+    end)
+
+    it("takes a world whose metatable a game changed to extend it (bump's world "
+      .. "subclassed)", function()
+      local meta = getmetatable(bump.newWorld(128))
+      local storage = setmetatable({super = meta.__index}, meta)
+      storage.__mt = {__index = storage}
+      function storage:spawn(item, x, y) return self:add(item, x, y, 10, 10) end
+      local world = setmetatable(bump.newWorld(64), storage.__mt)
+      world:spawn("a", 0, 0)
+      world:add("b", 20, 0, 10, 10)
+      local x, y, _, len = world:move("a", 50, 0)
+      assert.same({10, 0, 1, 2}, {x, y, len, world:countItems()})
+      assert.has_error(function() world.add("c", 0, 0, 1, 1) end,
+        "call it as world:add(...), with a colon, got \"c\" for the world")
+    end)
+
+    it("lets go of a removed item: collected once the game drops it", function()
+      local world = bump.newWorld(64)
+      world:add("p", 0, 0, 10, 10)
+      local alive = setmetatable({}, {__mode = "k"})
+      do
+        local enemy = {}
+        alive[enemy] = true
+        world:add(enemy, 20, 0, 10, 10)
+        local _, _, cols, len = world:move("p", 50, 0)
+        assert.same({1, enemy}, {len, cols[1].other})
+        world:remove(enemy)
+        assert.equal(enemy, cols[1].other) -- (the move's cols stay as they were)
+      end
+      world:move("p", 0, 50) -- (meets nothing)
+      collectgarbage()
+      collectgarbage()
+      assert.is_nil(next(alive))
+    end)
+  end)
+
   describe("errors", function()
     local function message(fn)
       local ok, err = pcall(fn)

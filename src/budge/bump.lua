@@ -190,18 +190,44 @@ local function detect_into(col, x1, y1, w1, h1, x2, y2, w2, h2, goal_x, goal_y)
   return col
 end
 
+-- A col's own fields (those budge writes; slide and bounce only for those responses).
+local COL_FIELDS = {item = true, other = true, type = true, overlaps = true, ti = true,
+  move = true, normal = true, touch = true, itemRect = true, otherRect = true, slide = true,
+  bounce = true, _slide = true, _bounce = true}
+
+-- A field a game writes into a col (`col.didTouch = true` in a custom response, as many
+-- bump games do) would stay in the record the world reuses, and a later collision would
+-- carry it (bump makes every col anew). A write to a field the col does not have marks it
+-- (_game), and col_at takes the game's fields out before the col is reused: a game that
+-- writes none pays nothing (budge writes slide and bounce with rawset).
+local COL_META = {__newindex = function(col, key, value)
+  if not COL_FIELDS[key] then rawset(col, "_game", true) end
+  rawset(col, key, value)
+end}
+
 local function new_col()
-  return {overlaps = false, ti = 0, move = {x = 0, y = 0}, normal = {x = 0, y = 0},
+  return setmetatable({item = false, other = false, type = false, overlaps = false, ti = 0,
+    move = {x = 0, y = 0}, normal = {x = 0, y = 0},
     touch = {x = 0, y = 0}, itemRect = {x = 0, y = 0, w = 0, h = 0},
     otherRect = {x = 0, y = 0, w = 0, h = 0}, _slide = {x = 0, y = 0},
-    _bounce = {x = 0, y = 0}}
+    _bounce = {x = 0, y = 0}}, COL_META)
+end
+
+-- Takes the game's own fields out of a col about to be reused (see COL_META).
+local function forget_game_fields(col)
+  for key in pairs(col) do
+    if not COL_FIELDS[key] then col[key] = nil end
+  end
 end
 
 ---bump.rect.detectCollision: a new collision record, or nil (see detect_into).
 local function detect_collision(x1, y1, w1, h1, x2, y2, w2, h2, goal_x, goal_y)
   local col = detect_into(new_col(), x1, y1, w1, h1, x2, y2, w2, h2, goal_x or x1,
     goal_y or y1)
-  if col then col._slide, col._bounce = nil, nil end
+  if col then -- (a table of the game's own, bump's fields alone)
+    col._slide, col._bounce, col.item, col.other, col.type = nil, nil, nil, nil, nil
+    setmetatable(col, nil)
+  end
   return col
 end
 
@@ -372,7 +398,10 @@ end
 -- The start of every method: called with a colon, and not, when it changes the world or
 -- moves in it, from inside a move's filter or custom response.
 local function enter(self, call)
-  if not rawequal(getmetatable(self), World) then -- (a game item's class may have an __eq)
+  -- (rawequal: a game item's class may have an __eq. A world given another metatable, a
+  -- game's subclass of bump's world as some games make, is a world by its own fields)
+  if not rawequal(getmetatable(self), World) and not (type(self) == "table"
+    and type(rawget(self, "_proxies")) == "table" and rawget(self, "_world") ~= nil) then
     error(format("call it as world:%s(...), with a colon, got %s for the world", call,
       describe(self)), 3)
   end
@@ -533,6 +562,15 @@ function World:remove(item)
   local proxy = find_proxy(self, item)
   self._world:remove(proxy)
   self._proxies[item] = nil
+  -- what the last move's scratch still holds of it, let go (see cut): a game's item the
+  -- world no longer holds is collected once the game drops it, as in bump
+  local record, region = proxy._record, self._region
+  for i = 1, #region do
+    if region[i] == record then region[i] = hash_module.SENTINEL end
+  end
+  if self._best == record then self._best = false end
+  if self._own == record then self._own = false end
+  if rawequal(self._item, item) then self._item = false end
   local list = self._list
   local last = list[#list]
   list[proxy._index] = last
@@ -561,6 +599,8 @@ local function col_at(list, pool, n)
   if col == nil then
     col = new_col()
     pool[n] = col
+  elseif col._game then
+    forget_game_fields(col)
   end
   list[n] = col
   return col
@@ -568,7 +608,11 @@ end
 
 -- Ends `list` at n (so #list and ipairs see n records).
 local function cut(list, n)
-  for i = n + 1, #list do list[i] = nil end
+  for i = n + 1, #list do
+    local col = list[i] -- (its items let go: a game's item the world no longer holds is
+    col.item, col.other = false, false -- collected once the game drops it, as in bump)
+    list[i] = nil
+  end
 end
 
 -- What the move does for a filter's answer: "touch", "cross", "slide" or "bounce" when it
@@ -796,7 +840,8 @@ end
 local function fill_col(col, item, record, kind, t, axis, x, y, w, h, goal_x, goal_y)
   local rx, ry, rw, rh = record[1], record[2], record[3], record[4]
   col.item, col.other, col.type = item, record[7], kind
-  col.slide, col.bounce = nil, nil
+  rawset(col, "slide", nil) -- (rawset: see COL_META)
+  rawset(col, "bounce", nil)
   if t < 0 then
     detect_into(col, x, y, w, h, rx, ry, rw, rh, goal_x, goal_y)
     return col
@@ -897,15 +942,22 @@ local function meet(self, other, t, axis, x, y, goal_x, goal_y)
     self._cross_tie = false
     if t > 0 then clamp_tie(self, col, t, axis) end
   end
+  if t < 0 and response == "custom" then -- started inside it: the game's response runs, as
+    -- in bump, and the move is let out of it (budge's rule, never backed out) toward the
+    -- goal the response returns (from where the leg began: the item is met, not met again)
+    local new_x, new_y = custom_response(self, answer, col, self._w, self._h, goal_x, goal_y)
+    if new_x == goal_x and new_y == goal_y then return nil end
+    return true, x, y, new_x, new_y
+  end
   if t < 0 or response == "cross" then -- crossed, or let out of it: the leg goes on
     if answer == "slide" then
       local s = col._slide
       s.x, s.y = goal_x, goal_y
-      col.slide = s
+      rawset(col, "slide", s) -- (rawset: see COL_META)
     elseif answer == "bounce" then
       local b = col._bounce
       b.x, b.y = goal_x, goal_y
-      col.bounce = b
+      rawset(col, "bounce", b)
     end
     return nil
   end
@@ -914,13 +966,13 @@ local function meet(self, other, t, axis, x, y, goal_x, goal_y)
   if response == "slide" then
     local s = col._slide
     s.x, s.y = slide_goal(col, goal_x, goal_y)
-    col.slide = s
+    rawset(col, "slide", s)
     return true, touch.x, touch.y, s.x, s.y
   end
   if response == "bounce" then
     local b = col._bounce
     b.x, b.y = bounce_goal(col, goal_x, goal_y)
-    col.bounce = b
+    rawset(col, "bounce", b)
     return true, touch.x, touch.y, b.x, b.y
   end
   local new_x, new_y, from_x, from_y = custom_response(self, answer, col, self._w, self._h,
@@ -1179,7 +1231,8 @@ function World:project(item, x, y, w, h, goal_x, goal_y, filter)
       n = n + 1
       local col = list[n]
       col.item, col.other, col.type = item, other.item, nil
-      col.slide, col.bounce = nil, nil
+      rawset(col, "slide", nil) -- (rawset: see COL_META)
+      rawset(col, "bounce", nil)
     end
   end
   local kept = 0
