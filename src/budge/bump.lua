@@ -840,8 +840,13 @@ end
 local function fill_col(col, item, record, kind, t, axis, x, y, w, h, goal_x, goal_y)
   local rx, ry, rw, rh = record[1], record[2], record[3], record[4]
   col.item, col.other, col.type = item, record[7], kind
-  rawset(col, "slide", nil) -- (rawset: see COL_META)
-  rawset(col, "bounce", nil)
+  if BRANCH_FREE then -- (rawset: no call of COL_META's __newindex for an absent field)
+    rawset(col, "slide", nil)
+    rawset(col, "bounce", nil)
+  else -- (Lua 5.x: rawset is a call into C; a present field is written as it is)
+    if col.slide ~= nil then col.slide = nil end
+    if col.bounce ~= nil then col.bounce = nil end
+  end
   if t < 0 then
     detect_into(col, x, y, w, h, rx, ry, rw, rh, goal_x, goal_y)
     return col
