@@ -1005,6 +1005,30 @@ describe("budge.bump", function()
         "call it as world:add(...), with a colon, got \"c\" for the world")
     end)
 
+    it("lists the items a segment starts inside as bump does: by where the line through "
+      .. "it enters them", function()
+      local world = bump.newWorld(64)
+      world:add("B", 20, 0, 60, 10) -- (the line enters it at x = 20, A at 0: A first)
+      world:add("A", 0, 0, 60, 10)
+      world:add("C", 30, 0, 5, 10) -- (on its near face at the start: entered at 0, last)
+      world:add("D", 90, 0, 5, 10) -- (met further on)
+      world:add("E", -10, 0, 100, 10) -- (entered before all)
+      local items, len = world:querySegment(30, 5, 100, 5)
+      assert.same({{"E", "A", "B", "C", "D"}, 5}, {items, len})
+      local infos = world:querySegmentWithCoords(30, 5, 100, 5)
+      local names = {}
+      for i, info in ipairs(infos) do names[i] = info.item .. " " .. info.ti1 end
+      assert.same({"E 0", "A 0", "B 0", "C 0", "D 0.85714285714286"}, names)
+      local peer = load_peer()
+      if peer then
+        local other = peer.newWorld(64)
+        for _, name in ipairs({"B", "A", "C", "D", "E"}) do
+          other:add(name, world:getRect(name))
+        end
+        assert.same(items, (other:querySegment(30, 5, 100, 5)))
+      end
+    end)
+
     it("lets go of a removed item: collected once the game drops it", function()
       local world = bump.newWorld(64)
       world:add("p", 0, 0, 10, 10)

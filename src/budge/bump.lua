@@ -329,6 +329,8 @@ local ENGINE = {[touch_response] = "touch", [cross_response] = "cross",
 ---@field package _project_cols table[] world:project's
 ---@field package _project_pool table[]
 ---@field package _found table[] the budge world's query output (scratch)
+---@field package _found_t number[] its entry fractions (segments)
+---@field package _found_key number[] where the infinite line enters each (segments)
 ---@field package _projecting boolean a project is running (a nested one gets new lists)
 local World = {}
 World.__index = World
@@ -485,7 +487,7 @@ function bump.newWorld(cell_size)
     _move_cols = {}, _move_pool = {},
     _check_cols = {}, _check_pool = {},
     _project_cols = {}, _project_pool = {},
-    _found = {},
+    _found = {}, _found_t = {}, _found_key = {},
     _projecting = false, -- a project is running (one its filter calls gets lists of its own)
   }, World)
   -- The filter a custom response is given: the move's, less what it met already (as bump
@@ -1324,7 +1326,31 @@ local function segment_hits(self, x1, y1, x2, y2)
   check_span(w, y1, 0, "y1", "the segment", 4)
   check_span(w, x2, 0, "x2", "the segment", 4)
   check_span(w, y2, 0, "y2", "the segment", 4)
-  local found, count = w:query_segment(x1, y1, x2, y2, self._found)
+  local found, count, entered = w:query_segment(x1, y1, x2, y2, self._found, self._found_t)
+  -- The items entered at 0 (the segment starts inside them, or on a near face), here in
+  -- the order they were added, in bump's order: by where the infinite line through the
+  -- segment enters each (before the start for those it starts inside), then (as near) in
+  -- the order added. Past them, budge's order is bump's.
+  local run = 0
+  while run < count and entered[run + 1] == 0 do run = run + 1 end
+  if run > 1 then
+    local keys = self._found_key
+    for i = 1, run do
+      local proxy = found[i]
+      local near, far = segment_indices(proxy.x, proxy.y, proxy.width, proxy.height, x1, y1,
+        x2, y2, -HUGE, HUGE)
+      keys[i] = near and min(near, far) or 0 -- (nil: never, it passes through it)
+    end
+    for i = 2, run do -- (insertion: stable)
+      local proxy, key = found[i], keys[i]
+      local j = i - 1
+      while j >= 1 and keys[j] > key do
+        found[j + 1], keys[j + 1] = found[j], keys[j]
+        j = j - 1
+      end
+      found[j + 1], keys[j + 1] = proxy, key
+    end
+  end
   return found, count
 end
 
