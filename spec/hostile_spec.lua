@@ -516,11 +516,12 @@ describe("the world's range", function()
     assert.is_false(ok)
     assert.equal("spec/hostile_spec.lua:" .. (debug.getinfo(1, "l").currentline - 2)
       .. ": tile_width must keep the layer within this world's range, -16777216 to 16777216 "
-      .. "(2^24 cells of 1 px, at most 2^40 px), got 1024 (20000 columns from 0 reach "
+      .. "(2^24 cells of 1 px, at most 2^40 px), got 1024 (20000 columns from opts.x = 0 reach "
       .. "20480000)", err)
     assert.has_error(function() world:add_tiles({{1}, {1}}, 16, 2 ^ 24, {x = 5}) end,
       "tile_height must keep the layer within this world's range, -16777216 to 16777216 "
-      .. "(2^24 cells of 1 px, at most 2^40 px), got 16777216 (2 rows from 0 reach 33554432)")
+      .. "(2^24 cells of 1 px, at most 2^40 px), got 16777216 (2 rows from opts.y = 0 reach "
+      .. "33554432)")
     assert.has_error(function() world:add_tiles({{1}}, 16, 16, {x = -2 ^ 25}) end,
       "opts.x must keep the layer within this world's range, -16777216 to 16777216 "
       .. "(2^24 cells of 1 px, at most 2^40 px), got -33554432")
@@ -555,7 +556,7 @@ describe("the world's range", function()
         message:format("x", "4.6116860184274e+18"))
       actor.x, actor.y = 20, 2 ^ 30 - 5 -- (its far side out)
       assert.has_error(function() world:move(actor, 0, -2 ^ 30) end,
-        message:format("y", "1073741819 (its far side at 1073741829)"))
+        message:format("y", "1073741819 (its size 10 puts its far side at 1073741829)"))
       actor.y = 0
       local x, y = world:move(actor, -100, 0, method) -- (and on: against the solid)
       assert.same({16, 0, 16, 0}, {x, y, actor.x, actor.y})
@@ -622,24 +623,24 @@ describe("the world's range", function()
     end
     local world = budge.new_world()
     assert.has_error(function() world:add_solid(box(1, 0, huge, 10)) end,
-      message("box.x", "box", "1 (its far side at 9.2233720368548e+18)"))
+      message("box.x", "box", "1 (its size 9.2233720368548e+18 puts its far side at 9.2233720368548e+18)"))
     assert.has_error(function() world:add_tiles({{1, 1}}, math.floor(huge / 2), 16, {x = 5}) end,
-      message("tile_width", "layer", "4.6116860184274e+18 (2 columns from 5 reach "
+      message("tile_width", "layer", "4.6116860184274e+18 (2 columns from opts.x = 5 reach "
         .. "9.2233720368548e+18)"))
     local actor = world:add_actor(box(0, 0, 10, 10))
     actor.width = huge
     assert.has_error(function() world:move(actor, 5, 0) end, -- (the width the game set)
-      message("actor.x", "actor", "0 (its far side at 9.2233720368548e+18)"))
+      message("actor.x", "actor", "0 (its size 9.2233720368548e+18 puts its far side at 9.2233720368548e+18)"))
     actor.width = 10
     assert.has_error(function() world:query_rect(1, 0, huge, 10) end,
-      message("x", "rectangle", "1 (its far side at 9.2233720368548e+18)"))
+      message("x", "rectangle", "1 (its size 9.2233720368548e+18 puts its far side at 9.2233720368548e+18)"))
     assert.has_error(function() world:query_sweep(5, 0, huge, 1, 1, 0) end,
-      message("x", "box", "5 (its far side at 9.2233720368548e+18)"))
+      message("x", "box", "5 (its size 9.2233720368548e+18 puts its far side at 9.2233720368548e+18)"))
     local found, count = world:query_rect(-100, -100, 200, 200)
     assert.same({{actor}, 1, 0, 0}, {found, count, actor.x, actor.y})
     local front = bump.newWorld()
     assert.has_error(function() front:add("wide", 1, 0, huge, 10) end,
-      message("x", "rectangle", "1 (its far side at 9.2233720368548e+18)"))
+      message("x", "rectangle", "1 (its size 9.2233720368548e+18 puts its far side at 9.2233720368548e+18)"))
     assert.same({false, 0}, {front:hasItem("wide"), front:countItems()})
   end)
 

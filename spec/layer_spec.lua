@@ -198,6 +198,13 @@ describe("budge.layer's axis scan", function()
     grid[1][8], grid[3][7] = 0, 0
     world:update(handle)
     assert.are.same({116, 32}, move(16, 30))
+    -- (in place: with is_oneway given, spare arrays to read into, see the next spec; the
+    -- default test raises nothing and keeps none, a second copy of a big map's tiles)
+    local plain = world:add_tiles(grid, 16, 16, {y = 1000})
+    world:update(plain)
+    world:update(plain)
+    assert.are.same({nil, nil, "table"}, {plain._spare_kinds, plain._spare_ids,
+      type(handle._spare_kinds)})
   end)
 
   it("is left as it was by an is_solid that raises part-way through world:update; the "

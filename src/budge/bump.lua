@@ -399,11 +399,23 @@ end
 
 -- The start of every method: called with a colon, and not, when it changes the world or
 -- moves in it, from inside a move's filter or custom response.
+-- True when `self` is a world made by bump.newWorld given another metatable whose
+-- __index leads to World (a game's subclass of bump's world, as some games make).
+local function subclassed(self)
+  if type(self) ~= "table" or type(rawget(self, "_proxies")) ~= "table" then return false end
+  local meta = getmetatable(self)
+  for _ = 1, 16 do
+    if type(meta) ~= "table" then return false end
+    local index = rawget(meta, "__index")
+    if rawequal(index, World) then return true end
+    meta = getmetatable(index)
+  end
+  return false
+end
+
 local function enter(self, call)
-  -- (rawequal: a game item's class may have an __eq. A world given another metatable, a
-  -- game's subclass of bump's world as some games make, is a world by its own fields)
-  if not rawequal(getmetatable(self), World) and not (type(self) == "table"
-    and type(rawget(self, "_proxies")) == "table" and rawget(self, "_world") ~= nil) then
+  -- (rawequal: a game item's class may have an __eq)
+  if not rawequal(getmetatable(self), World) and not subclassed(self) then
     error(format("call it as world:%s(...), with a colon, got %s for the world", call,
       describe(self)), 3)
   end
@@ -557,6 +569,21 @@ function World:add(item, x, y, w, h)
   return item
 end
 
+-- Past the region's last record, nearest's loop (LuaJIT) reads PAD of these: a record
+-- no leg overlaps and every leg has passed (its box starts at +inf, its mark is +inf;
+-- hash.lua says why the padding).
+local PAD = 2
+local SENTINEL = hash_module.SENTINEL
+
+-- The records of `pool` past the end of `list` let go of `item` (World:remove).
+local function let_go(list, pool, item)
+  for i = #list + 1, #pool do
+    local col = pool[i]
+    if rawequal(col.other, item) then col.other = false end
+    if rawequal(col.item, item) then col.item = false end
+  end
+end
+
 ---world:remove(item).
 ---@param item any
 function World:remove(item)
@@ -564,15 +591,22 @@ function World:remove(item)
   local proxy = find_proxy(self, item)
   self._world:remove(proxy)
   self._proxies[item] = nil
-  -- what the last move's scratch still holds of it, let go (see cut): a game's item the
-  -- world no longer holds is collected once the game drops it, as in bump
-  local record, region = proxy._record, self._region
-  for i = 1, #region do
-    if region[i] == record then region[i] = hash_module.SENTINEL end
+  -- What the world's scratch still holds of it, let go (see cut): a game's item the world
+  -- no longer holds is collected once the game drops it, as in bump. The region (a
+  -- move's candidates, read in no later call) cut back to the last move's, so that one
+  -- long move makes no later remove slow; the records of the lists past their ends (a
+  -- list's own records stay as they are until the next call reuses them).
+  local record, region, kept = proxy._record, self._region, self._region_n + PAD
+  for i = 1, kept do
+    if region[i] == record then region[i] = SENTINEL end
   end
+  for i = #region, kept + 1, -1 do region[i] = nil end
   if self._best == record then self._best = false end
   if self._own == record then self._own = false end
   if rawequal(self._item, item) then self._item = false end
+  let_go(self._move_cols, self._move_pool, item)
+  let_go(self._check_cols, self._check_pool, item)
+  let_go(self._project_cols, self._project_pool, item)
   local list = self._list
   local last = list[#list]
   list[proxy._index] = last
@@ -609,10 +643,15 @@ local function col_at(list, pool, n)
 end
 
 -- Ends `list` at n (so #list and ipairs see n records).
-local function cut(list, n)
+local function cut(list, n, proxies)
   for i = n + 1, #list do
-    local col = list[i] -- (its items let go: a game's item the world no longer holds is
-    col.item, col.other = false, false -- collected once the game drops it, as in bump)
+    -- (a record dropped from the list lets go of an item the world no longer holds, so
+    -- that the game's item is collected once the game drops it, as in bump; one the
+    -- world still holds is left: a game's loop over the last move's cols that moves the
+    -- crate it touched still reads its col, as it did before 2026-12-06, see the README)
+    local col = list[i]
+    if proxies[col.other] == nil then col.other = false end
+    if proxies[col.item] == nil then col.item = false end
     list[i] = nil
   end
 end
@@ -695,12 +734,6 @@ local function offer(self, record, first, enter_x, enter_y)
   self._best, self._best_t = record, first
   self._best_enter_x, self._best_enter_y = enter_x, enter_y
 end
-
--- Past the region's last record, nearest's loop (LuaJIT) reads PAD of these: a record
--- no leg overlaps and every leg has passed (its box starts at +inf, its mark is +inf;
--- hash.lua says why the padding).
-local PAD = 2
-local SENTINEL = hash_module.SENTINEL
 
 -- Makes the move's region (see plan_move) hold what the leg's rectangle overlaps: the
 -- records the first leg's rectangle overlaps, looked up in the hash again only when a
@@ -949,13 +982,6 @@ local function meet(self, other, t, axis, x, y, goal_x, goal_y)
     self._cross_tie = false
     if t > 0 then clamp_tie(self, col, t, axis) end
   end
-  if t < 0 and response == "custom" then -- started inside it: the game's response runs, as
-    -- in bump, and the move is let out of it (budge's rule, never backed out) toward the
-    -- goal the response returns (from where the leg began: the item is met, not met again)
-    local new_x, new_y = custom_response(self, answer, col, self._w, self._h, goal_x, goal_y)
-    if new_x == goal_x and new_y == goal_y then return nil end
-    return true, x, y, new_x, new_y
-  end
   if t < 0 or response == "cross" then -- crossed, or let out of it: the leg goes on
     if answer == "slide" then
       local s = col._slide
@@ -1066,7 +1092,7 @@ function plan_move(self, proxy, goal_x, goal_y, filter, list, pool)
     end
   end
   local n = self._n
-  cut(list, n)
+  cut(list, n, self._proxies)
   self._running = false
   return x, y, n
 end
@@ -1253,7 +1279,7 @@ function World:project(item, x, y, w, h, goal_x, goal_y, filter)
       insert_sorted(list, kept)
     end
   end
-  cut(list, kept)
+  cut(list, kept, self._proxies)
   self._projecting = nested
   return list, kept
 end

@@ -145,8 +145,8 @@ function entry.check_span(self, low, size, name, what, level)
   -- too, and an integer's float is exact below 2^53, far past any range)
   if low < -range or low > range or low - 0.0 + size > range then
     -- (with the far side when it alone leaves the range: the size is at fault)
-    local far = (low < -range or low > range) and "" or format(" (its far side at %s)",
-      describe(low - 0.0 + size))
+    local far = (low < -range or low > range) and "" or format(" (its size %s puts its "
+      .. "far side at %s)", describe(size), describe(low - 0.0 + size))
     error(format("%s must keep %s within this world's range, -%s to %s (2^24 cells of %s "
       .. "px, at most 2^40 px), got %s%s", name, what, describe(range), describe(range),
       describe(self.cell_size), describe(low), far), level or 3)
@@ -191,9 +191,9 @@ function entry.check_layer_span(self, origin, count, size, origin_name, size_nam
   if far > self.range then
     local range = self.range
     error(format("%s must keep the layer within this world's range, -%s to %s (2^24 cells "
-      .. "of %s px, at most 2^40 px), got %s (%d %s from %s reach %s)", size_name,
+      .. "of %s px, at most 2^40 px), got %s (%d %s from %s = %s reach %s)", size_name,
       describe(range), describe(range), describe(self.cell_size), describe(size), count,
-      unit, describe(origin), describe(far)), 3)
+      unit, origin_name, describe(origin), describe(far)), 3)
   end
 end
 

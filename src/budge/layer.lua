@@ -120,13 +120,19 @@ function layer.reread(tiles, level)
     error(format("grid changed size from %dx%d to %dx%d: remove the layer and add it again",
       tiles.cols, tiles.rows, cols, rows), level + 1)
   end
-  -- into the spare arrays, swapped in once all is read: an error that is_solid or
-  -- is_oneway raises part-way leaves the layer as it was (read in place, the kinds it had
-  -- read were new and the reach table old, so a move and a query disagreed)
-  local kinds, ids = tiles._spare_kinds or {}, tiles._spare_ids or {}
-  read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, kinds, ids)
-  tiles._spare_kinds, tiles._spare_ids = tiles._kinds, tiles._ids
-  tiles._kinds, tiles._ids = kinds, ids
+  local is_solid, is_oneway = tiles._is_solid, tiles._is_oneway
+  if is_solid == nil and is_oneway == nil then -- (the default test raises nothing)
+    read(source, data, cols, rows, nil, nil, tiles._kinds, tiles._ids)
+  else
+    -- into spare arrays, swapped in once all is read: an error that is_solid or
+    -- is_oneway raises part-way leaves the layer as it was (read in place, the kinds it
+    -- had read were new and the reach table old, so a move and a query disagreed). Kept
+    -- for the next update: no garbage, and twice the memory of the layer's kinds and ids
+    local kinds, ids = tiles._spare_kinds or {}, tiles._spare_ids or {}
+    read(source, data, cols, rows, is_solid, is_oneway, kinds, ids)
+    tiles._spare_kinds, tiles._spare_ids = tiles._kinds, tiles._ids
+    tiles._kinds, tiles._ids = kinds, ids
+  end
   build_reach(tiles)
 end
 
