@@ -537,8 +537,8 @@ describe("the world's range", function()
       select(2, world:query_rect(-1e6, -1e6, 2e6, 2e6))})
   end)
 
-  it("refuses to move or check an actor the game put beyond it without world:update, "
-    .. "naming actor.x or actor.y", function()
+  it("refuses to move or check an actor, or move a solid, the game put beyond it without "
+    .. "world:update, naming actor.x or actor.y (solid.x)", function()
     -- (only the move's end was checked: from 2^62 px back by as much, a move ended inside
     -- a solid; found by review, 2026-12-06)
     local world = budge.new_world()
@@ -563,6 +563,12 @@ describe("the world's range", function()
       actor.x = 20
       world:update(actor)
     end
+    local solid = world:add_solid(box(100, 0, 10, 10))
+    solid.x = 2 ^ 62
+    assert.has_error(function() world:move_solid(solid, -2 ^ 62 + 25, 0) end,
+      "solid.x must keep the solid within this world's range, -1073741824 to 1073741824 "
+      .. "(2^24 cells of 64 px, at most 2^40 px), got 4.6116860184274e+18")
+    assert.same({2 ^ 62, 0}, {solid.x, solid.y})
   end)
 
   it("stops a move of 8e9 px at the wall it meets, its numbers integers or floats, by "

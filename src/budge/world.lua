@@ -594,6 +594,10 @@ function World:move_solid(solid, dx, dy)
       record and A_KIND[record[5]] or describe(solid)), 2)
   end
   check_box(solid, "solid", 2)
+  -- (where the game put it, as at its add: from 2^62 px back by as much, it ended 25 px
+  -- short, a review found, 2026-12-06)
+  check_span(self, solid.x, solid.width, "solid.x", "the solid")
+  check_span(self, solid.y, solid.height, "solid.y", "the solid")
   check_number(dx, "dx", 2)
   check_number(dy, "dy", 2)
   check_delta_span(self, solid.x, dx, solid.width, "dx", "the solid")
