@@ -1018,6 +1018,23 @@ describe("budge.bump", function()
       local lookalike = setmetatable({_world = {}, _proxies = {}}, {__index = storage.add})
       assert.has_error(function() world.add(lookalike, "c", 0, 0, 1, 1) end,
         "call it as world:add(...), with a colon, got a table for the world")
+      -- (World's methods copied into a class, as hump.class does; an __index function; a
+      -- __metatable field: worlds all, as in bump. A table with World as its __index and
+      -- no world inside is refused, not an error from inside)
+      local class = {}
+      for name, method in pairs(meta.__index) do class[name] = method end
+      class.__index = class
+      local copied = setmetatable(bump.newWorld(64), class)
+      local by_function = setmetatable(bump.newWorld(64),
+        {__index = function(_, key) return meta.__index[key] end, __metatable = "locked"})
+      for _, w in ipairs({copied, by_function}) do
+        w:add("a", 0, 0, 10, 10)
+        w:add("b", 20, 0, 10, 10)
+        assert.same({10, 0}, xy(w:move("a", 50, 0)))
+      end
+      local empty = setmetatable({_proxies = {}}, {__index = meta.__index})
+      assert.has_error(function() empty:add("c", 0, 0, 1, 1) end,
+        "call it as world:add(...), with a colon, got a table for the world")
     end)
 
     it("lists the items a segment starts inside as bump does: by where the line through "

@@ -245,6 +245,16 @@ describe("budge.layer's axis scan", function()
       local bytes = garbage.measure(flip, 20,
         {jit_off = true, warm = function() for i = 1, 3 do flip(i) end end})
       assert.are.equal(0, bytes)
+      -- with the default test, a grid that raises itself (a row's __index for a hole):
+      -- what was read before the error stands, with its reach table, so that a move and
+      -- a query agree (a review, 2026-12-07)
+      local plain = world:add_tiles({{0, 0, 0, 0}, {0, 0, 0, 0}, {1, 1, 1, 1}}, 16, 16,
+        {x = 0, y = 0})
+      world:remove(level)
+      setmetatable(plain.grid[2], {__index = function(_, k) error("no tile at " .. k, 0) end})
+      plain.grid[2][1], plain.grid[2][3] = 1, nil
+      assert.are.same({false, "no tile at 3"}, {pcall(world.update, world, plain)})
+      assert.are.same({8, 1, 1}, fall()) -- (column 1 read: the move and the query see it)
     end
   end)
 end)

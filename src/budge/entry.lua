@@ -193,7 +193,7 @@ function entry.check_layer_span(self, origin, count, size, origin_name, size_nam
     error(format("%s must keep the layer within this world's range, -%s to %s (2^24 cells "
       .. "of %s px, at most 2^40 px), got %s (%d %s from %s = %s reach %s)", size_name,
       describe(range), describe(range), describe(self.cell_size), describe(size), count,
-      unit, origin_name, describe(origin), describe(far)), 3)
+      count == 1 and unit:sub(1, -2) or unit, origin_name, describe(origin), describe(far)), 3)
   end
 end
 

@@ -110,7 +110,9 @@ function layer.new(source, tile_width, tile_height, opts, level)
 end
 
 ---Rereads the layer's grid after the game changed it; the grid must keep its size.
----Errors at `level` and changes nothing when it cannot.
+---Errors at `level` and changes nothing when it cannot; an error that the game's
+---is_solid or is_oneway raises changes nothing either, and one the grid raises (a row's
+---__index) leaves what was read before it, with the reach table to match.
 ---@param tiles budge.TileLayer
 ---@param level integer
 function layer.reread(tiles, level)
@@ -121,8 +123,14 @@ function layer.reread(tiles, level)
       tiles.cols, tiles.rows, cols, rows), level + 1)
   end
   local is_solid, is_oneway = tiles._is_solid, tiles._is_oneway
-  if is_solid == nil and is_oneway == nil then -- (the default test raises nothing)
-    read(source, data, cols, rows, nil, nil, tiles._kinds, tiles._ids)
+  if is_solid == nil and is_oneway == nil then -- (the default test raises nothing, but the
+    -- grid may: a row's __index. Then what was read stands, with its reach table, so
+    -- that moves and queries agree, and the error goes on)
+    local ok, err = pcall(read, source, data, cols, rows, nil, nil, tiles._kinds, tiles._ids)
+    if not ok then
+      build_reach(tiles)
+      error(err, 0)
+    end
   else
     -- into spare arrays, swapped in once all is read: an error that is_solid or
     -- is_oneway raises part-way leaves the layer as it was (read in place, the kinds it
