@@ -125,7 +125,8 @@ function layer.reread(tiles, level)
   local is_solid, is_oneway = tiles._is_solid, tiles._is_oneway
   if is_solid == nil and is_oneway == nil then -- (the default test raises nothing, but the
     -- grid may: a row's __index. Then what was read stands, with its reach table, so
-    -- that moves and queries agree, and the error goes on)
+    -- that moves and queries agree, and the error goes on, the same value; a traceback
+    -- taken of it starts here, not in the game's __index, which its message still names)
     local ok, err = pcall(read, source, data, cols, rows, nil, nil, tiles._kinds, tiles._ids)
     if not ok then
       build_reach(tiles)
