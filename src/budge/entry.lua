@@ -129,6 +129,15 @@ function entry.guarded(self, busy, level, body, recover, a, b, c, d, e)
   return result
 end
 
+-- The range errors' one message: "<name> must keep <what> within this world's range,
+-- -R to R (...), got <value><detail>", raised at `level`.
+local function range_error(self, name, what, value, detail, level)
+  local range = describe(self.range)
+  error(format("%s must keep %s within this world's range, -%s to %s (2^24 cells of %s px, "
+    .. "at most 2^40 px), got %s%s", name, what, range, range, describe(self.cell_size),
+    describe(value), detail), level + 1)
+end
+
 ---Errors (at the caller of the entry) when the span [low, low + size] on one axis leaves
 ---the world's range.
 ---@param self budge.World
@@ -147,9 +156,7 @@ function entry.check_span(self, low, size, name, what, level)
     -- (with the far side when it alone leaves the range: the size is at fault)
     local far = (low < -range or low > range) and "" or format(" (its size %s puts its "
       .. "far side at %s)", describe(size), describe(low - 0.0 + size))
-    error(format("%s must keep %s within this world's range, -%s to %s (2^24 cells of %s "
-      .. "px, at most 2^40 px), got %s%s", name, what, describe(range), describe(range),
-      describe(self.cell_size), describe(low), far), level or 3)
+    range_error(self, name, what, low, far, level or 3)
   end
 end
 
@@ -167,10 +174,8 @@ end
 function entry.check_delta_span(self, start, delta, size, name, what, level)
   local range, low = self.range, start - 0.0 + delta
   if low < -range or low > range or low + size > range then
-    error(format("%s must keep %s within this world's range, -%s to %s (2^24 cells of %s "
-      .. "px, at most 2^40 px), got %s (from %s to %s, size %s)", name, what,
-      describe(range), describe(range), describe(self.cell_size), describe(delta),
-      describe(start), describe(low), describe(size)), level or 3)
+    range_error(self, name, what, delta, format(" (from %s to %s, size %s)", describe(start),
+      describe(low), describe(size)), level or 3)
   end
 end
 
@@ -189,11 +194,9 @@ function entry.check_layer_span(self, origin, count, size, origin_name, size_nam
   -- (in floats: an integer product wraps around on Lua 5.3+, see check_span)
   local far = origin - 0.0 + count * (size - 0.0)
   if far > self.range then
-    local range = self.range
-    error(format("%s must keep the layer within this world's range, -%s to %s (2^24 cells "
-      .. "of %s px, at most 2^40 px), got %s (%d %s from %s = %s reach %s)", size_name,
-      describe(range), describe(range), describe(self.cell_size), describe(size), count,
-      count == 1 and unit:sub(1, -2) or unit, origin_name, describe(origin), describe(far)), 3)
+    range_error(self, size_name, "the layer", size, format(" (%d %s from %s = %s reach %s)",
+      count, count == 1 and unit:sub(1, -2) or unit, origin_name, describe(origin),
+      describe(far)), 3)
   end
 end
 
