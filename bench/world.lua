@@ -116,7 +116,8 @@ local function setup(way, grid, starts, method)
         reference_move(grid, actor, actor.dx, actor.dy)
       end
     end
-  elseif way == "bump" or way == "bump_boxes" or way == "bump_merged" then
+  elseif way == "bump" or way == "bump_boxes" or way == "bump_merged"
+    or way == "bump_walls" then
     local bump = way == "bump" and require("bump") or require("budge.bump")
     local world = bump.newWorld(64)
     if way == "bump_merged" then
@@ -136,7 +137,11 @@ local function setup(way, grid, starts, method)
       local actor = actors[i]
       world:add(actor, actor.x, actor.y, SIZE, SIZE)
     end
-    local function slide() return "slide" end
+    local slide = function() return "slide" end
+    if way == "bump_walls" then -- (--way alone: the movers pass through each other, a
+      -- filter's nil for every mover, as bullets among bullets; the tiles are {} items)
+      slide = function(_, other) if other.dx == nil then return "slide" end end
+    end
     step = function()
       for i = 1, #actors do
         local actor = actors[i]

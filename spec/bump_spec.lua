@@ -623,152 +623,163 @@ describe("budge.bump", function()
       assert.same({0, y}, xy(world:move("q", 0, -20)))
     end)
 
-    it("stops on the nearer face when faces an ulp apart round to the same entry time",
-      function()
-      -- The case the review found: A's face is one ulp nearer than B's, both entry times
-      -- round to the same ti, and B's centre is nearer the mover's. The move stopped on
-      -- B's face, an ulp inside A, and reported only B (bump.lua stops on A).
-      local world = bump.newWorld(64)
-      world:add("A", 7.2999999999999989, -100, 10, 200)
-      world:add("B", 7.2999999999999998, -1, 10, 3)
-      local projected = world:project("M", 1.7300170957637223e-14, 0, 2.0929632175541313, 1,
-        102.2, 0)
-      assert.same({"A", "B"}, {projected[1].other, projected[2].other})
-      assert.equal(projected[1].ti, projected[2].ti) -- (the tie)
-      world:add("M", 1.7300170957637223e-14, 0, 2.0929632175541313, 1)
-      local x, y, cols, len = world:move("M", 102.2, 0)
-      assert.same({5.2070367824458677, 0, 1, "A"}, {x, y, len, cols[1].other})
-      assert.equal(0, select(4, world:check("M", x, y)))
-      -- Oracle, on both axes and both directions: walls A (long, its centre far from the
-      -- mover's) and B (short, its centre on the mover's line) 1 to 3 ulps apart, the mover
-      -- sliding through both: the first col is the wall whose face is nearer along the
-      -- move (B when they round to one face), and the move ends inside neither.
-      local aim = require("fixtures.aim")
-      local rng = random_source.new(20261206)
-      local ties = 0
-      for case = 1, 2000 do
-        local is_x, forward = case % 2 == 0, case % 4 < 2
-        local size = 1 + rng(0, 40000) / 997
-        local a_at = rng(1000, 60000) / 997
-        local b_at = aim.nudge(a_at, rng(1, 3) * (forward and 1 or -1))
-        local gap = 1 + rng(0, 90000) / 1009
-        local start = forward and a_at - size - gap or a_at + 10 + gap
-        local delta = (gap + 20 + rng(0, 1000) / 7) * (forward and 1 or -1)
-        local a_face, b_face = a_at, b_at
-        if not forward then a_face, b_face = a_at + 10, b_at + 10 end
-        local nearer = "B"
-        if a_face ~= b_face and (a_face < b_face) == forward then nearer = "A" end
-        local function rect(along, along_size, across, across_size)
-          if is_x then return along, across, along_size, across_size end
-          return across, along, across_size, along_size
-        end
-        local walls = {A = {rect(a_at, 10, -100, 200)}, B = {rect(b_at, 10, -1, 3)}}
-        world = bump.newWorld(64)
-        for _, name in ipairs({"A", "B"}) do
-          local r = walls[name]
-          world:add(name, r[1], r[2], r[3], r[4])
-        end
-        local mx, my, mw, mh = rect(start, size, 0, 1)
-        local gx, gy = rect(start + delta, size, 0, 1)
-        projected = world:project("P", mx, my, mw, mh, gx, gy)
-        if projected[1].ti == projected[2].ti then ties = ties + 1 end
-        world:add("M", mx, my, mw, mh)
-        x, y, cols = world:move("M", gx, gy)
-        local message = ("case %d: ends at %.17g, %.17g"):format(case, x, y)
-        assert.same({nearer, nearer}, {cols[1].other, projected[1].other}, message)
-        for _, name in ipairs({"A", "B"}) do
-          local r = walls[name]
-          assert.is_false(x < r[1] + r[3] and r[1] < x + mw and y < r[2] + r[4] and r[2] < y + mh,
-            message .. " inside " .. name)
-        end
-      end
-      assert.is_true(ties > 300, "ties " .. ties)
-    end)
-
-    it("stops outside both a wall and a ceiling met at the same rounded time across axes",
-      function()
-      -- A review's case: moving up and left, the mover meets wall A across x and ceiling B
-      -- across y at one rounded ti. The stop on A's face had y = y + dy * ti, an ulp above
-      -- B's bottom: a touch ended inside B unreported, and a slide's next leg started inside
-      -- B and was let out through it, 25.7 px up (ending at y = -158.18...).
-      local function scene()
-        local world = bump.newWorld(64)
-        world:add("A", -172.1642438057483, -359.10233629483383, 120, 800)
-        world:add("B", -52.164243805748292, -67.238094203920497, 421.66666666666669,
-          25.714285714285715)
-        world:add("M", -10.086223984142716, 11.230997038499506, 27.054162487462388,
-          25.623871614844532)
+    -- (each also with the crowd's sort from the first candidate, crowd_next, which must
+    -- keep nearest's ties and its corner clamp)
+    for _, crowd_after in ipairs({false, 0}) do
+      local suffix = crowd_after and ", the candidates sorted" or ""
+      local function new_world(cell_size)
+        local world = bump.newWorld(cell_size)
+        if crowd_after then world._crowd_after = crowd_after end
         return world
       end
-      for _, response in ipairs({"touch", "slide"}) do
-        local world = scene()
-        local x, y, cols, len = world:move("M", -145.21280475718532, -158.18230997038498,
-          function() return response end)
-        local names = {}
-        for i = 1, len do names[i] = cols[i].other end
-        assert.same({-52.164243805748299, -41.523808489634781}, {x, y}, response)
-        assert.same(response == "touch" and {"A"} or {"A", "B"}, names)
+
+      it("stops on the nearer face when faces an ulp apart round to the same entry time"
+        .. suffix, function()
+        -- The case the review found: A's face is one ulp nearer than B's, both entry times
+        -- round to the same ti, and B's centre is nearer the mover's. The move stopped on
+        -- B's face, an ulp inside A, and reported only B (bump.lua stops on A).
+        local world = new_world(64)
+        world:add("A", 7.2999999999999989, -100, 10, 200)
+        world:add("B", 7.2999999999999998, -1, 10, 3)
+        local projected = world:project("M", 1.7300170957637223e-14, 0, 2.0929632175541313, 1,
+          102.2, 0)
+        assert.same({"A", "B"}, {projected[1].other, projected[2].other})
+        assert.equal(projected[1].ti, projected[2].ti) -- (the tie)
+        world:add("M", 1.7300170957637223e-14, 0, 2.0929632175541313, 1)
+        local x, y, cols, len = world:move("M", 102.2, 0)
+        assert.same({5.2070367824458677, 0, 1, "A"}, {x, y, len, cols[1].other})
         assert.equal(0, select(4, world:check("M", x, y)))
-      end
-      -- Oracle: a wall and a slab meeting at a corner, their faces nudged by ulps until the
-      -- rounded entry times into both are equal; the move, touching or sliding, ends inside
-      -- neither.
-      local aim = require("fixtures.aim")
-      local rng = random_source.new(20261207)
-      local ties = 0
-      for case = 1, 2000 do
-        local mw, mh = 1 + rng(0, 40000) / 997, 1 + rng(0, 40000) / 997
-        local mx, my = rng(-30000, 30000) / 1009, rng(-30000, 30000) / 1013
-        local sx, sy = rng(1, 2) == 1 and 1 or -1, rng(1, 2) == 1 and 1 or -1
-        local dx, dy = sx * (1 + rng(0, 90000) / 1009), sy * (1 + rng(0, 90000) / 1013)
-        local t = rng(1, 999) / 2000
-        local goal_x, goal_y = mx + 2 * dx, my + 2 * dy
-        dx, dy = goal_x - mx, goal_y - my -- (the move's own deltas: its times use these)
-        local x1, y1 = mx + mw, my + mh
-        local function a_rect(f) -- (the wall, its face on the mover's side at f)
-          if sx > 0 then return {f, my - 400, 50, 800} end
-          return {f - 50, my - 400, 50, 800}
-        end
-        local function b_rect(f) -- (the slab, reaching the wall's face across x)
-          local x = sx > 0 and a_rect(f[1])[1] - 400 or a_rect(f[1])[1] + 50
-          if sy > 0 then return {x, f[2], 400, 30} end
-          return {x, f[2] - 30, 400, 30}
-        end
-        local function times(fa, fb) -- the rounded times of entry into each, as a move has
-          local a, b = a_rect(fa), b_rect({fa, fb})
-          local ta = sx > 0 and (a[1] - x1) / dx or (a[1] + a[3] - mx) / dx
-          local tb = sy > 0 and (b[2] - y1) / dy or (b[2] + b[4] - my) / dy
-          return ta, tb
-        end
-        local ax = (sx > 0 and x1 or mx) + dx * t
-        local by = (sy > 0 and y1 or my) + dy * t
-        local found
-        for i = -3, 3 do
-          for j = -40, 40 do
-            local ta, tb = times(aim.nudge(ax, i), aim.nudge(by, j))
-            if not found and ta == tb then found = {aim.nudge(ax, i), aim.nudge(by, j)} end
+        -- Oracle, on both axes and both directions: walls A (long, its centre far from the
+        -- mover's) and B (short, its centre on the mover's line) 1 to 3 ulps apart, the mover
+        -- sliding through both: the first col is the wall whose face is nearer along the
+        -- move (B when they round to one face), and the move ends inside neither.
+        local aim = require("fixtures.aim")
+        local rng = random_source.new(20261206)
+        local ties = 0
+        for case = 1, 2000 do
+          local is_x, forward = case % 2 == 0, case % 4 < 2
+          local size = 1 + rng(0, 40000) / 997
+          local a_at = rng(1000, 60000) / 997
+          local b_at = aim.nudge(a_at, rng(1, 3) * (forward and 1 or -1))
+          local gap = 1 + rng(0, 90000) / 1009
+          local start = forward and a_at - size - gap or a_at + 10 + gap
+          local delta = (gap + 20 + rng(0, 1000) / 7) * (forward and 1 or -1)
+          local a_face, b_face = a_at, b_at
+          if not forward then a_face, b_face = a_at + 10, b_at + 10 end
+          local nearer = "B"
+          if a_face ~= b_face and (a_face < b_face) == forward then nearer = "A" end
+          local function rect(along, along_size, across, across_size)
+            if is_x then return along, across, along_size, across_size end
+            return across, along, across_size, along_size
           end
-        end
-        if found then
-          ties = ties + 1
-          local walls = {A = a_rect(found[1]), B = b_rect(found)}
-          local world = bump.newWorld(case % 2 == 0 and 64 or 7.3)
+          local walls = {A = {rect(a_at, 10, -100, 200)}, B = {rect(b_at, 10, -1, 3)}}
+          world = new_world(64)
           for _, name in ipairs({"A", "B"}) do
             local r = walls[name]
             world:add(name, r[1], r[2], r[3], r[4])
           end
+          local mx, my, mw, mh = rect(start, size, 0, 1)
+          local gx, gy = rect(start + delta, size, 0, 1)
+          projected = world:project("P", mx, my, mw, mh, gx, gy)
+          if projected[1].ti == projected[2].ti then ties = ties + 1 end
           world:add("M", mx, my, mw, mh)
-          local response = case % 3 == 0 and "touch" or "slide"
-          local x, y = world:move("M", goal_x, goal_y, function() return response end)
+          x, y, cols = world:move("M", gx, gy)
+          local message = ("case %d: ends at %.17g, %.17g"):format(case, x, y)
+          assert.same({nearer, nearer}, {cols[1].other, projected[1].other}, message)
           for _, name in ipairs({"A", "B"}) do
             local r = walls[name]
             assert.is_false(x < r[1] + r[3] and r[1] < x + mw and y < r[2] + r[4] and r[2] < y + mh,
-              ("case %d: %s ends at %.17g, %.17g inside %s"):format(case, response, x, y, name))
+              message .. " inside " .. name)
           end
         end
-      end
-      assert.is_true(ties > 1000, "ties " .. ties)
-    end)
+        assert.is_true(ties > 300, "ties " .. ties)
+      end)
+
+      it("stops outside both a wall and a ceiling met at the same rounded time across axes"
+        .. suffix, function()
+        -- A review's case: moving up and left, the mover meets wall A across x and ceiling B
+        -- across y at one rounded ti. The stop on A's face had y = y + dy * ti, an ulp above
+        -- B's bottom: a touch ended inside B unreported, and a slide's next leg started inside
+        -- B and was let out through it, 25.7 px up (ending at y = -158.18...).
+        local function scene()
+          local world = new_world(64)
+          world:add("A", -172.1642438057483, -359.10233629483383, 120, 800)
+          world:add("B", -52.164243805748292, -67.238094203920497, 421.66666666666669,
+            25.714285714285715)
+          world:add("M", -10.086223984142716, 11.230997038499506, 27.054162487462388,
+            25.623871614844532)
+          return world
+        end
+        for _, response in ipairs({"touch", "slide"}) do
+          local world = scene()
+          local x, y, cols, len = world:move("M", -145.21280475718532, -158.18230997038498,
+            function() return response end)
+          local names = {}
+          for i = 1, len do names[i] = cols[i].other end
+          assert.same({-52.164243805748299, -41.523808489634781}, {x, y}, response)
+          assert.same(response == "touch" and {"A"} or {"A", "B"}, names)
+          assert.equal(0, select(4, world:check("M", x, y)))
+        end
+        -- Oracle: a wall and a slab meeting at a corner, their faces nudged by ulps until the
+        -- rounded entry times into both are equal; the move, touching or sliding, ends inside
+        -- neither.
+        local aim = require("fixtures.aim")
+        local rng = random_source.new(20261207)
+        local ties = 0
+        for case = 1, 2000 do
+          local mw, mh = 1 + rng(0, 40000) / 997, 1 + rng(0, 40000) / 997
+          local mx, my = rng(-30000, 30000) / 1009, rng(-30000, 30000) / 1013
+          local sx, sy = rng(1, 2) == 1 and 1 or -1, rng(1, 2) == 1 and 1 or -1
+          local dx, dy = sx * (1 + rng(0, 90000) / 1009), sy * (1 + rng(0, 90000) / 1013)
+          local t = rng(1, 999) / 2000
+          local goal_x, goal_y = mx + 2 * dx, my + 2 * dy
+          dx, dy = goal_x - mx, goal_y - my -- (the move's own deltas: its times use these)
+          local x1, y1 = mx + mw, my + mh
+          local function a_rect(f) -- (the wall, its face on the mover's side at f)
+            if sx > 0 then return {f, my - 400, 50, 800} end
+            return {f - 50, my - 400, 50, 800}
+          end
+          local function b_rect(f) -- (the slab, reaching the wall's face across x)
+            local x = sx > 0 and a_rect(f[1])[1] - 400 or a_rect(f[1])[1] + 50
+            if sy > 0 then return {x, f[2], 400, 30} end
+            return {x, f[2] - 30, 400, 30}
+          end
+          local function times(fa, fb) -- the rounded times of entry into each, as a move has
+            local a, b = a_rect(fa), b_rect({fa, fb})
+            local ta = sx > 0 and (a[1] - x1) / dx or (a[1] + a[3] - mx) / dx
+            local tb = sy > 0 and (b[2] - y1) / dy or (b[2] + b[4] - my) / dy
+            return ta, tb
+          end
+          local ax = (sx > 0 and x1 or mx) + dx * t
+          local by = (sy > 0 and y1 or my) + dy * t
+          local found
+          for i = -3, 3 do
+            for j = -40, 40 do
+              local ta, tb = times(aim.nudge(ax, i), aim.nudge(by, j))
+              if not found and ta == tb then found = {aim.nudge(ax, i), aim.nudge(by, j)} end
+            end
+          end
+          if found then
+            ties = ties + 1
+            local walls = {A = a_rect(found[1]), B = b_rect(found)}
+            local world = new_world(case % 2 == 0 and 64 or 7.3)
+            for _, name in ipairs({"A", "B"}) do
+              local r = walls[name]
+              world:add(name, r[1], r[2], r[3], r[4])
+            end
+            world:add("M", mx, my, mw, mh)
+            local response = case % 3 == 0 and "touch" or "slide"
+            local x, y = world:move("M", goal_x, goal_y, function() return response end)
+            for _, name in ipairs({"A", "B"}) do
+              local r = walls[name]
+              assert.is_false(x < r[1] + r[3] and r[1] < x + mw and y < r[2] + r[4] and r[2] < y + mh,
+                ("case %d: %s ends at %.17g, %.17g inside %s"):format(case, response, x, y, name))
+            end
+          end
+        end
+        assert.is_true(ties > 1000, "ties " .. ties)
+      end)
+    end
 
     it("lets a filter of project and of every query query and project the world", function()
       local world = bump.newWorld(16)
@@ -1088,6 +1099,82 @@ describe("budge.bump", function()
       assert.same({1, crate}, {len, col.other})
       local x = world:move(col.other, 25, 0)
       assert.same({25, crate, "crate"}, {x, col.other, col.other.name})
+    end)
+  end)
+
+  describe("a leg through a crowd (after CROWD candidates it sorts the rest)", function()
+    -- Piles of items on a 2 px grid (many meet the leg at the same ti, across the same face
+    -- or different ones), each answering by its kind; a mover sent through them. The whole
+    -- story (every filter call, every col's fields, where each move ends) exactly as
+    -- nearest alone tells it (_crowd_after huge), whether the sort starts at the first
+    -- candidate (0) or after CROWD (the default).
+    local ANSWERS = {false, false, false, "cross", "cross", "cross", "slide", "touch", "bounce"}
+    local function story(seed, crowd_after)
+      local rng = random_source.new(seed)
+      local world = bump.newWorld(32)
+      if crowd_after then world._crowd_after = crowd_after end
+      local log, longest = {}, 0
+      for id = 1, rng(20, 70) do
+        world:add({id = id, answer = ANSWERS[rng(1, #ANSWERS)]}, 40 + 2 * rng(0, 30),
+          40 + 2 * rng(0, 30), 2 * rng(1, 6), 2 * rng(1, 6))
+      end
+      local mover = {id = 0}
+      world:add(mover, 2 * rng(0, 70), 2 * rng(0, 70), 2 * rng(1, 5), 2 * rng(1, 5))
+      local function filter(_, other)
+        log[#log + 1] = "asked " .. other.id
+        return other.answer
+      end
+      for _ = 1, 12 do
+        local x, y, cols, len = world:move(mover, 2 * rng(0, 70) + rng(0, 3) / 4,
+          2 * rng(0, 70) + rng(0, 3) / 4, filter)
+        log[#log + 1] = ("%.17g %.17g %d"):format(x, y, len)
+        for i = 1, len do
+          local col = cols[i]
+          log[#log + 1] = ("%d %s %s %.17g %.17g,%.17g %.17g,%.17g %s %s"):format(col.other.id,
+            col.type, tostring(col.overlaps), col.ti, col.normal.x, col.normal.y, col.touch.x,
+            col.touch.y, col.slide and ("%.17g,%.17g"):format(col.slide.x, col.slide.y) or "-",
+            col.bounce and ("%.17g,%.17g"):format(col.bounce.x, col.bounce.y) or "-")
+        end
+        longest = math.max(longest, world._crowd_n)
+      end
+      return log, longest
+    end
+
+    it("meets what nearest alone meets, in the same order, with the same cols", function()
+      local sorted, ties = 0, 0
+      for seed = 1, 150 do
+        local expected = story(seed, math.huge)
+        local from_first, longest = story(seed, 0)
+        assert.same(expected, from_first)
+        assert.same(expected, (story(seed)))
+        if longest > 1 then sorted = sorted + 1 end
+        -- (a tie: two cols of one move at the same ti)
+        local seen = {}
+        for _, line in ipairs(expected) do
+          local ti = line:match("^%d+ %a+ %a+ (%S+)")
+          if ti then
+            if seen[ti] then ties = ties + 1 end
+            seen[ti] = true
+          elseif not line:match("^asked") then seen = {} end
+        end
+      end
+      -- (the scenes do what they are for: the sort ran on most, and ties were met)
+      assert.is_true(sorted > 100, "sorted " .. sorted)
+      assert.is_true(ties > 100, "ties " .. ties)
+    end)
+
+    it("costs no garbage once warm", function()
+      local world = bump.newWorld(64)
+      for i = 1, 40 do world:add({id = i}, 100 + (i % 8) * 4, 100 + math.floor(i / 8) * 4, 8, 8) end
+      local mover = {}
+      world:add(mover, 60, 110, 8, 8)
+      local x = 60
+      local function ignore() return nil end
+      local function step() x = world:move(mover, x < 100 and 160 or 60, 110, ignore) end
+      local bytes = garbage.measure(step, 200,
+        {jit_off = true, warm = function() for _ = 1, 4 do step() end end})
+      -- (32 items in the mover's rows: 16 met nearest first, 16 sorted)
+      assert.same({0, 16}, {bytes, world._crowd_n})
     end)
   end)
 
