@@ -625,11 +625,11 @@ describe("budge.bump", function()
 
     -- (each also with the crowd's sort from the first candidate, crowd_next, which must
     -- keep nearest's ties and its corner clamp)
-    for _, crowd_after in ipairs({false, 0}) do
-      local suffix = crowd_after and ", the candidates sorted" or ""
+    for _, crowd_work in ipairs({false, 0}) do
+      local suffix = crowd_work and ", the candidates sorted" or ""
       local function new_world(cell_size)
         local world = bump.newWorld(cell_size)
-        if crowd_after then world._crowd_after = crowd_after end
+        if crowd_work then world._crowd_work = crowd_work end
         return world
       end
 
@@ -1102,17 +1102,17 @@ describe("budge.bump", function()
     end)
   end)
 
-  describe("a leg through a crowd (after CROWD candidates it sorts the rest)", function()
+  describe("a leg through a crowd (past CROWD_WORK it sorts the rest)", function()
     -- Piles of items on a 2 px grid (many meet the leg at the same ti, across the same face
     -- or different ones), each answering by its kind; a mover sent through them. The whole
     -- story (every filter call, every col's fields, where each move ends) exactly as
-    -- nearest alone tells it (_crowd_after huge), whether the sort starts at the first
-    -- candidate (0) or after CROWD (the default).
+    -- nearest alone tells it (_crowd_work huge), whether the sort starts at the first
+    -- candidate (0) or past CROWD_WORK (the default).
     local ANSWERS = {false, false, false, "cross", "cross", "cross", "slide", "touch", "bounce"}
-    local function story(seed, crowd_after)
+    local function story(seed, crowd_work)
       local rng = random_source.new(seed)
       local world = bump.newWorld(32)
-      if crowd_after then world._crowd_after = crowd_after end
+      if crowd_work then world._crowd_work = crowd_work end
       local log, longest = {}, 0
       for id = 1, rng(20, 70) do
         world:add({id = id, answer = ANSWERS[rng(1, #ANSWERS)]}, 40 + 2 * rng(0, 30),
@@ -1163,6 +1163,56 @@ describe("budge.bump", function()
       assert.is_true(ties > 100, "ties " .. ties)
     end)
 
+    it("clamps a stop only onto an item the leg meets at the same time (a review's scene)",
+      function()
+      -- P and Q tie across axes ahead of S in the region's order; S is met first. R is
+      -- entered across x at S's time but passed above: nearest's flag, set by P and Q's
+      -- tie, made clamp_tie move the stop an ulp onto R's face (40.49893149831172); the
+      -- sort sees only S's time. Both paths now give the stop on S, R untouched.
+      local function run(work, ignored)
+        local world = bump.newWorld(100000) -- (one cell: the region in the order added)
+        if work then world._crowd_work = work end
+        for i = 1, ignored do world:add({name = "I" .. i}, 41 + i * 0.01, 10, 0.001, 20) end
+        world:add({name = "P", answer = "touch"}, 71.943870124179213, 39.311579302830026, 3,
+          6.0018408796118612)
+        world:add({name = "Q", answer = "touch"}, 61.362905799915971, 44.313420182441888,
+          11.580964324263245, 3)
+        world:add({name = "S", answer = "touch"}, 35.708449336180102, 22.449445880837644,
+          19.161928648526491, 3)
+        world:add({name = "R", answer = "touch"}, 50.079895822574969, 11.879592152027904, 3, 5)
+        local mover = {name = "M"}
+        world:add(mover, 37.362905799915971, 15.311579302830026, 9.5809643242632454,
+          4.0018408796118612)
+        local x, y, cols, len = world:move(mover, 68.628254876369184, 46.576928379283238,
+          function(_, other) return other.answer end)
+        return ("%.17g %.17g %d %s %.17g"):format(x, y, len, cols[len].other.name,
+          cols[len].touch.x)
+      end
+      local expected = "40.498931498311727 18.447605001225782 1 S 40.498931498311727"
+      assert.same({expected, expected, expected, expected},
+        {run(math.huge, 0), run(0, 0), run(math.huge, 16), run(nil, 16)})
+    end)
+
+    it("sorts a deep overlap first on Lua 5.3+ with integer sizes of 2^32", function()
+      -- (overlap_ti's product wrapped around to 0 in integers: the deepest sorted last)
+      local function run(number)
+        local world = bump.newWorld(number(65536))
+        local a, b, m = {name = "A"}, {name = "B"}, {name = "M"}
+        world:add(a, number(0), number(0), number(2 ^ 32), number(2 ^ 32))
+        world:add(b, number(2 ^ 32 - 10), number(0), number(20), number(20))
+        world:add(m, number(0), number(0), number(2 ^ 32), number(2 ^ 32))
+        local cols, len = world:project(m, number(0), number(0), number(2 ^ 32),
+          number(2 ^ 32), number(5), number(0))
+        local _, _, checked = world:check(m, number(5), number(0), function() return "cross" end)
+        return {len, cols[1].other.name, cols[1].ti, cols[2].ti, checked[1].other.name,
+          checked[1].ti}
+      end
+      local expected = {2, "A", -2 ^ 64, -200, "A", -2 ^ 64}
+      assert.same(expected, run(function(v) return v + 0.0 end))
+      local integer = rawget(math, "tointeger") -- (Lua 5.3+: sizes as integers)
+      assert.same(expected, run(function(v) return integer and integer(v) or v end))
+    end)
+
     it("costs no garbage once warm", function()
       local world = bump.newWorld(64)
       for i = 1, 40 do world:add({id = i}, 100 + (i % 8) * 4, 100 + math.floor(i / 8) * 4, 8, 8) end
@@ -1173,8 +1223,9 @@ describe("budge.bump", function()
       local function step() x = world:move(mover, x < 100 and 160 or 60, 110, ignore) end
       local bytes = garbage.measure(step, 200,
         {jit_off = true, warm = function() for _ = 1, 4 do step() end end})
-      -- (32 items in the mover's rows: 16 met nearest first, 16 sorted)
-      assert.same({0, 16}, {bytes, world._crowd_n})
+      -- (32 items in the mover's rows, 33 records in its region with its own: 7 met
+      -- nearest first (7 * 33 <= CROWD_WORK, 256), 25 sorted)
+      assert.same({0, 25}, {bytes, world._crowd_n})
     end)
   end)
 

@@ -46,8 +46,9 @@ local bump = {
 -- 2^53 / 2^20 moves). A move of more than 2^19 legs (each meets a new item) would reach
 -- MET: far beyond any scene.
 local MET, MARK_SPAN = 2 ^ 19, 2 ^ 20
--- How many candidates a leg meets nearest first before it sorts the rest (see crowd_order).
-local CROWD = 16
+-- How many records a leg's nearest may scan in all (its rounds times its region's
+-- records) before the leg sorts the rest of its candidates ("Crowds", above leg_time).
+local CROWD_WORK = 256
 -- Where a record keeps its mark: in its array part, beside its box (budge.Record's [14]:
 -- the narrow phase's loop reads the box and the mark of each candidate from one run of
 -- memory, not the mark from the record's hash part as well).
@@ -127,12 +128,14 @@ end
 -- bump's measure of how deep (x1, y1, w1, h1) starts inside (x2, y2, w2, h2), as a
 -- negative ti: minus the item's size clipped to the nearest corner of their Minkowski
 -- difference, on each axis, multiplied; never 0 or -0 (an underflow would make it read as
--- a touch at the start), so an overlap always sorts first.
+-- a touch at the start), so an overlap always sorts first. The product in floats: on Lua
+-- 5.3+ two integer sizes of 2^32 multiplied wrapped around to 0, and the deepest overlap
+-- sorted last (a review, 2026-12-07).
 local SMALLEST = 2 ^ -1074
 local function overlap_ti(x1, y1, w1, h1, x2, y2, w2, h2)
   local x, y, w, h = rect_diff(x1, y1, w1, h1, x2, y2, w2, h2)
   local px, py = nearest_corner(x, y, w, h, 0, 0)
-  return min(-min(w1, abs(px)) * min(h1, abs(py)), -SMALLEST), px, py
+  return min(-(min(w1, abs(px)) + 0.0) * min(h1, abs(py)), -SMALLEST), px, py
 end
 
 -- overlap_ti's ti alone, without a branch (LuaJIT: a branch here, deep in a move, is a
@@ -141,7 +144,7 @@ end
 -- sides on each axis is the smaller of their sizes, exactly the same number.
 local function overlap_depth(x1, y1, w1, h1, x2, y2, w2, h2)
   local x, y, w, h = rect_diff(x1, y1, w1, h1, x2, y2, w2, h2)
-  return min(-min(w1, abs(x), abs(x + w)) * min(h1, abs(y), abs(y + h)), -SMALLEST)
+  return min(-(min(w1, abs(x), abs(x + w)) + 0.0) * min(h1, abs(y), abs(y + h)), -SMALLEST)
 end
 
 -- Fills `col` (a record with the tables move, normal, touch, itemRect and otherRect) with
@@ -498,8 +501,8 @@ function bump.newWorld(cell_size)
     _check_cols = {}, _check_pool = {},
     _project_cols = {}, _project_pool = {},
     _found = {}, _found_t = {}, _found_key = {},
-    _crowd = {}, _crowd_t = {}, _crowd_axis = {}, _crowd_n = 0, _crowd_at = 1, -- (CROWD)
-    _crowd_after = CROWD, -- candidates a leg meets before it sorts the rest (specs: huge)
+    _crowd = {}, _crowd_t = {}, _crowd_axis = {}, _crowd_n = 0, _crowd_at = 1, -- (CROWD_WORK)
+    _crowd_work = CROWD_WORK, -- (specs: huge, never sorted, or 0, from the first candidate)
     _projecting = false, -- a project is running (one its filter calls gets lists of its own)
   }, World)
   -- The filter a custom response is given: the move's, less what it met already (as bump
@@ -861,22 +864,25 @@ end
 
 -- Crowds: a leg that passes over many candidates (a filter's nil or "cross" for each:
 -- bullets among bullets, a player through a field of coins) sent nearest over the whole
--- region once per candidate, k + 1 passes of k records: k^2. So after CROWD candidates in
--- one leg, its remaining candidates are worked out once and sorted by time (then by place
--- in the region, nearest's scan order), and each round takes the next: the same
--- candidates in the same order as nearest gives (ties at one time still go by
--- comes_before, in the region's order, and set _cross_tie as nearest does; bump_spec
--- compares both paths), in k log k (and a run of candidates at one time scanned at each
--- of its rounds: runs are short). Below CROWD, nearest alone: the common move's path
--- is as it was. `luajit bench/bump_crowds.lua --one budge K A 20000` (5 fresh runs each,
--- interleaved with the tree before, medians, 2026-12-07), 256 items piled in the leg's
--- way, each ignored: 121164 -> 39424 ns per move (bump.lua 3.1.7 in the same runs:
--- 22769), each crossed: 142997 -> 53180 (bump.lua: 8.97 ms); 4 to 64 items: as before
--- (README, "Crowds"). CROWD = 4 ran the world bench's movers passing through each other
--- (`bench/world.lua --way bump_walls --count 10000`) twice as long on LuaJIT; 16 as
--- before (5557 against 5676 ns per move, 5 runs each), and `--way bump_boxes --count
--- 1000` as before (1601 against 1647 ns, 7 runs; 59666 against 59846 instructions per
--- move on Lua 5.4).
+-- region once per candidate, k + 1 passes of k records: k^2. So once a leg's rounds
+-- would have scanned more than CROWD_WORK records of its region, its remaining
+-- candidates are worked out once and sorted by time (then by place in the region,
+-- nearest's scan order), and each round takes the next: the same candidates in the same
+-- order as nearest gives (a run of candidates at one time goes by comes_before in the
+-- region's order, as nearest's scan compares them; bump_spec compares both paths), in
+-- k log k, but for such runs, scanned again at each of their rounds (items piled exactly
+-- on one another all meet the leg at one time: k^2 comes_before calls). Below the
+-- budget, nearest alone: a common move's path is as it was (its region holds 2 to 7
+-- records). `luajit bench/bump_crowds.lua --one W K A M` (5 fresh runs each, interleaved
+-- with the tree before and bump.lua 3.1.7, medians, 2026-12-07), 256 items piled in the
+-- leg's way, each ignored: 132258 -> 29148 ns per move (bump.lua: 26788), each crossed:
+-- 155587 -> 35556 (bump.lua: 9.1 ms); 64 items: 7491 -> 6442 and 9102 -> 8262; 16: as
+-- before (README, "Crowds"). A budget of 4 candidates a leg instead ran the world bench's
+-- movers passing through each other (`bench/world.lua --way bump_walls --count 10000`,
+-- regions of a few to a few dozen records) twice as long on LuaJIT; with this one, 4203
+-- against 4079 ns per move (5 runs each), and `--way bump_boxes --count 1000` 1206
+-- against 1247 (11 runs); Lua 5.4, `bench/instructions.lua --way bump_boxes --lua
+-- lua5.4`: 59662 -> 60195 instructions per move.
 
 -- The leg time at which the running leg meets `record`, and the axis it enters it
 -- across, or nil when it does not meet it: nearest_compared's numbers for one record
@@ -936,7 +942,7 @@ local function sort_by_time(order, times, n)
 end
 
 -- The running leg's candidates not marked yet, as indices into the region, sorted
--- (see CROWD), with their times and axes by region index.
+-- (see CROWD_WORK), with their times and axes by region index.
 local function crowd_order(self)
   local region, pass = self._region, self._pass
   local order, times, axes = self._crowd, self._crowd_t, self._crowd_axis
@@ -1044,10 +1050,15 @@ end
 -- After a leg's nearest found a tie in time across different axes (_cross_tie): the
 -- touch in `col`, placed on the face of the record met across `axis` at leg time t (its
 -- other coordinate x + dx * t or y + dy * t), moved back onto the face of each record
--- not met yet that the leg enters at the same t across the other axis. Those times
--- round to one t with the faces apart, and the other coordinate could lie an ulp inside
--- such a record, which the next leg would then start in and be let out of, through it
--- (a review found a slide through a ceiling 25 px thick). The same times as nearest's.
+-- not met yet that the leg meets at the same t across the other axis (leg_time: the
+-- same times as nearest's). Those times round to one t with the faces apart, and the
+-- other coordinate could lie an ulp inside such a record, which the next leg would then
+-- start in and be let out of, through it (a review found a slide through a ceiling 25 px
+-- thick). Only a record the leg meets: one it enters on one axis at t but has left on
+-- the other by then (it passes above it) has no face to keep to; the flag can be set by
+-- a tie nearest's scan saw before it found an earlier best, and clamping onto such a
+-- record moved the stop an ulp (a review, 2026-12-07: 4069 of 200000 scenes built for
+-- it; the crowd's sort, which sees only the final time's ties, did not).
 -- Only for ties after the leg's start (at 0 the touch is where the leg starts, outside
 -- both): ties at 0 are common (a box pressed into a corner of tiles), and with them the
 -- flag and this scan cost `luajit bench/world.lua --way bump_boxes --count 1000` 10-20%
@@ -1058,12 +1069,10 @@ local function clamp_tie(self, col, t, axis)
   local touch, region, pass = col.touch, self._region, self._pass
   for i = 1, self._region_n do
     local record = region[i]
-    local rx, ry = record[1], record[2]
-    if rx < self._leg_right and self._leg_left < rx + record[3] and ry < self._leg_bottom
-      and self._leg_top < ry + record[4] and record[MARK] < pass then
-      local near_x, far_x, near_y, far_y = leg_times(self, record)
-      local enter_x, enter_y = min(near_x, far_x), min(near_y, far_y)
-      if max(enter_x, enter_y) + 0 == t and (enter_x > enter_y and 1 or 2) ~= axis then
+    if record[MARK] < pass then
+      local first, entered = leg_time(self, record)
+      if first == t and entered ~= axis then
+        local rx, ry = record[1], record[2]
         if axis == 1 then -- entered across y
           if dy > 0 then touch.y = min(touch.y, before(ry, h, y))
           else touch.y = max(touch.y, ry + record[4]) end
@@ -1144,11 +1153,13 @@ local function run_leg(self, x, y, goal_x, goal_y)
     self._leg_left, self._leg_top, self._leg_right, self._leg_bottom = left, top, right, bottom
   end
   self._pass = self._pass + 1 -- (records this leg's filter ignores are marked with it)
-  local crowd = self._crowd_after
+  -- (the rounds before the sort, CROWD_WORK: a division, no call: on Lua 5.x math.floor is
+  -- a call into C; the first round past it is the one within 1 of it)
+  local crowd = self._crowd_work / self._region_n
   for round = 1, self._region_n do -- (each round meets one candidate: at most all of them)
     local other, t, axis
-    if round > crowd then -- (see CROWD)
-      if round == crowd + 1 then crowd_order(self) end
+    if round > crowd then
+      if round - 1 <= crowd then crowd_order(self) end
       other, t, axis = crowd_next(self)
     elseif BRANCH_FREE then other, t, axis = nearest(self)
     else other, t, axis = nearest_compared(self) end
@@ -1192,6 +1203,7 @@ function plan_move(self, proxy, goal_x, goal_y, filter, list, pool)
   self._item, self._w, self._h = proxy.item, proxy.width, proxy.height
   self._filter, self._out, self._out_pool = filter, list, pool
   self._n = 0
+  self._cross_tie = false -- (one the last move's last leg left set: see clamp_tie)
   self._region_right = -HUGE -- (no region yet: the first leg looks in the hash)
   local x, y = proxy.x, proxy.y
   self._x0, self._y0 = x, y
