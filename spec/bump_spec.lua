@@ -1193,6 +1193,45 @@ describe("budge.bump", function()
         {run(math.huge, 0), run(0, 0), run(math.huge, 16), run(nil, 16)})
     end)
 
+    it("does not sort a leg its first candidate stops, in a region of more than 256", function()
+      -- (256 / 401 records < 1 round: every leg sorted all 400 candidates at once, 4.6 times
+      -- the instructions of a move stopped by the first; a review, 2026-12-07)
+      local sorted = {}
+      for _, work in ipairs({false, 0}) do
+        local world = bump.newWorld(64)
+        if work then world._crowd_work = work end
+        for i = 1, 400 do world:add({i}, 20 + i * 10, 0, 4, 4) end
+        local bullet = {}
+        world:add(bullet, 0, 1, 2, 2)
+        local x, _, cols, len = world:move(bullet, 4070, 1, function() return "touch" end)
+        sorted[#sorted + 1] = {world._region_n, x, len, cols[1].other[1], world._crowd_n}
+      end
+      assert.same({{401, 28, 1, 1, 0}, {401, 28, 1, 1, 400}}, sorted)
+    end)
+
+    it("keeps a stop out of a slab passed at its corner when an ignored item ties (review)",
+      function()
+      -- Wall A stops the slide; slab B is passed at its corner at the same rounded time,
+      -- and the stop, on A's exact face, lies inside B by ulps; C, ignored, ties with A
+      -- across axes. Clamping only onto items the leg meets (leg_time) let the next leg
+      -- start inside B and slide through it to y = 146.4.
+      for _, work in ipairs({math.huge, 0, false}) do
+        local world = bump.newWorld(64)
+        if work then world._crowd_work = work end
+        world:add("A", -77.831496531219017, -425.70779861796643, 50, 800)
+        world:add("B", -6.8535627298148061, 52.282754845484114, 400, 30)
+        world:add("C", -9, 52.282754845484114, 3, 1)
+        world:add("M", 3.4162537165510405, -25.707798617966436, 20.977933801404212,
+          40.211634904714145)
+        local answers = {A = "slide", B = "slide", C = false}
+        local x, y, cols, len = world:move("M", -138.94251734390485, 146.40572556762092,
+          function(_, other) return answers[other] end)
+        assert.same({"-27.831496531219017", "12.071119940769968", 2, "A", "B", 0},
+          {("%.17g"):format(x), ("%.17g"):format(y), len, cols[1].other, cols[2].other,
+          cols[2].ti})
+      end
+    end)
+
     it("sorts a deep overlap first on Lua 5.3+ with integer sizes of 2^32", function()
       -- (overlap_ti's product wrapped around to 0 in integers: the deepest sorted last)
       local function run(number)
@@ -1211,6 +1250,13 @@ describe("budge.bump", function()
       assert.same(expected, run(function(v) return v + 0.0 end))
       local integer = rawget(math, "tointeger") -- (Lua 5.3+: sizes as integers)
       assert.same(expected, run(function(v) return integer and integer(v) or v end))
+      -- (a product that fits stays an integer there, as in bump: -25, not -25.0)
+      local world = bump.newWorld(64)
+      world:add("A", 0, 0, 10, 10)
+      world:add("M", 5, 5, 10, 10)
+      local _, _, cols = world:check("M", 5, 5)
+      local math_type = rawget(math, "type") or function() return "integer" end
+      assert.same({"-25", "integer"}, {("%s"):format(cols[1].ti), math_type(cols[1].ti)})
     end)
 
     it("costs no garbage once warm", function()

@@ -128,23 +128,28 @@ end
 -- bump's measure of how deep (x1, y1, w1, h1) starts inside (x2, y2, w2, h2), as a
 -- negative ti: minus the item's size clipped to the nearest corner of their Minkowski
 -- difference, on each axis, multiplied; never 0 or -0 (an underflow would make it read as
--- a touch at the start), so an overlap always sorts first. The product in floats: on Lua
--- 5.3+ two integer sizes of 2^32 multiplied wrapped around to 0, and the deepest overlap
--- sorted last (a review, 2026-12-07).
+-- a touch at the start), so an overlap always sorts first. On Lua 5.3+, two integer sizes
+-- multiply to an integer, as in bump (-25, not -25.0), unless that is not the exact
+-- product: integer sizes of 2^32 wrapped around to 0, and the deepest overlap sorted last
+-- (a review, 2026-12-07); then the product in floats.
 local SMALLEST = 2 ^ -1074
 local function overlap_ti(x1, y1, w1, h1, x2, y2, w2, h2)
   local x, y, w, h = rect_diff(x1, y1, w1, h1, x2, y2, w2, h2)
   local px, py = nearest_corner(x, y, w, h, 0, 0)
-  return min(-(min(w1, abs(px)) + 0.0) * min(h1, abs(py)), -SMALLEST), px, py
+  local a, b = min(w1, abs(px)), min(h1, abs(py))
+  local product = a * b
+  if product ~= (a + 0.0) * b then product = (a + 0.0) * b end
+  return min(-product, -SMALLEST), px, py
 end
 
 -- overlap_ti's ti alone, without a branch (LuaJIT: a branch here, deep in a move, is a
 -- side trace carrying every value live in the move, which LuaJIT often cannot compile:
 -- "NYI: register coalescing too complex"): the size of the nearer of the corner's two
--- sides on each axis is the smaller of their sizes, exactly the same number.
+-- sides on each axis is the smaller of their sizes, exactly the same number. (LuaJIT's
+-- alone, nearest's: no integers there to wrap around.)
 local function overlap_depth(x1, y1, w1, h1, x2, y2, w2, h2)
   local x, y, w, h = rect_diff(x1, y1, w1, h1, x2, y2, w2, h2)
-  return min(-(min(w1, abs(x), abs(x + w)) + 0.0) * min(h1, abs(y), abs(y + h)), -SMALLEST)
+  return min(-min(w1, abs(x), abs(x + w)) * min(h1, abs(y), abs(y + h)), -SMALLEST)
 end
 
 -- Fills `col` (a record with the tables move, normal, touch, itemRect and otherRect) with
@@ -1050,15 +1055,19 @@ end
 -- After a leg's nearest found a tie in time across different axes (_cross_tie): the
 -- touch in `col`, placed on the face of the record met across `axis` at leg time t (its
 -- other coordinate x + dx * t or y + dy * t), moved back onto the face of each record
--- not met yet that the leg meets at the same t across the other axis (leg_time: the
--- same times as nearest's). Those times round to one t with the faces apart, and the
--- other coordinate could lie an ulp inside such a record, which the next leg would then
--- start in and be let out of, through it (a review found a slide through a ceiling 25 px
--- thick). Only a record the leg meets: one it enters on one axis at t but has left on
--- the other by then (it passes above it) has no face to keep to; the flag can be set by
--- a tie nearest's scan saw before it found an earlier best, and clamping onto such a
--- record moved the stop an ulp (a review, 2026-12-07: 4069 of 200000 scenes built for
--- it; the crowd's sort, which sees only the final time's ties, did not).
+-- not met yet that the leg enters at the same t across the other axis and that the stop
+-- lies inside. Those times round to one t with the faces apart, and the other
+-- coordinate could lie an ulp inside such a record, which the next leg would then start
+-- in and be let out of, through it (a review found a slide through a ceiling 25 px
+-- thick). Only one the stop is inside: the flag can be set by a tie nearest's scan saw
+-- before it found a nearer item (the crowd's sort sees only the final time's ties), and
+-- clamping onto a record the leg passes above moved the stop an ulp for nothing, and
+-- differently in the two paths (a review, 2026-12-07: 4069 of 200000 scenes built for
+-- it). Not "only one the leg meets" (leg_time): a slab passed at its corner at that
+-- time can still hold the stop, on the wall's exact face, by an ulp, and a slide then
+-- went through it (the next review). Known limit: with no tie across axes at the stop's
+-- time, the flag is not set and such a slab is not looked for (28 in 22547 of a
+-- review's corner cases, as before these changes; README).
 -- Only for ties after the leg's start (at 0 the touch is where the leg starts, outside
 -- both): ties at 0 are common (a box pressed into a corner of tiles), and with them the
 -- flag and this scan cost `luajit bench/world.lua --way bump_boxes --count 1000` 10-20%
@@ -1069,10 +1078,14 @@ local function clamp_tie(self, col, t, axis)
   local touch, region, pass = col.touch, self._region, self._pass
   for i = 1, self._region_n do
     local record = region[i]
-    if record[MARK] < pass then
-      local first, entered = leg_time(self, record)
-      if first == t and entered ~= axis then
-        local rx, ry = record[1], record[2]
+    local rx, ry = record[1], record[2]
+    if rx < self._leg_right and self._leg_left < rx + record[3] and ry < self._leg_bottom
+      and self._leg_top < ry + record[4] and record[MARK] < pass
+      and touch.x < rx + record[3] and rx < touch.x + w and touch.y < ry + record[4]
+      and ry < touch.y + h then -- (the stop is inside it: see above)
+      local near_x, far_x, near_y, far_y = leg_times(self, record)
+      local enter_x, enter_y = min(near_x, far_x), min(near_y, far_y)
+      if max(enter_x, enter_y) + 0 == t and (enter_x > enter_y and 1 or 2) ~= axis then
         if axis == 1 then -- entered across y
           if dy > 0 then touch.y = min(touch.y, before(ry, h, y))
           else touch.y = max(touch.y, ry + record[4]) end
@@ -1156,6 +1169,9 @@ local function run_leg(self, x, y, goal_x, goal_y)
   -- (the rounds before the sort, CROWD_WORK: a division, no call: on Lua 5.x math.floor is
   -- a call into C; the first round past it is the one within 1 of it)
   local crowd = self._crowd_work / self._region_n
+  if crowd < 1 and crowd > 0 then crowd = 1 end -- (never a sort before the first search: a
+  -- region of more than CROWD_WORK records sorted at each leg, though the first candidate
+  -- most often stops it; 0, the specs' setting, sorts from the first)
   for round = 1, self._region_n do -- (each round meets one candidate: at most all of them)
     local other, t, axis
     if round > crowd then
