@@ -498,7 +498,7 @@ function bump.newWorld(cell_size)
     _margin = cell_size / 4, -- how far a moved item's loose cells reach (World:move)
     _leg_x = 0, _leg_y = 0, _leg_dx = 0, _leg_dy = 0, _leg_x1 = 0, _leg_y1 = 0,
     _leg_goal_x = 0, _leg_goal_y = 0, _leg_left = 0, _leg_top = 0, _leg_right = 0, _leg_bottom = 0,
-    _best = false, _best_t = 0, _cross_tie = false, -- (false until the first leg)
+    _best = false, _best_t = 0, -- (false until the first leg)
     _best_enter_x = 0, _best_enter_y = 0, -- the best's entry times (offer)
     _region = {}, _region_n = 0, _region_left = 0, _region_top = 0, _region_right = 0,
     _region_bottom = 0, -- what the move's first leg's rectangle overlaps
@@ -723,7 +723,6 @@ local function offer(self, record, first, enter_x, enter_y)
     local dx, dy = self._leg_dx, self._leg_dy
     local axis = enter_x > enter_y and 1 or 2
     local best_axis = self._best_enter_x > self._best_enter_y and 1 or 2
-    if axis ~= best_axis and first > 0 then self._cross_tie = true end -- (see clamp_tie)
     if not comes_before(record, best, first, axis, best_axis, x, y, w, h, dx, dy) then
       return
     end
@@ -792,7 +791,6 @@ local function nearest_compared(self)
         if first < best_t then
           best, best_t, best_axis = record, first, axis
         elseif first == best_t then
-          if axis ~= best_axis and first > 0 then self._cross_tie = true end -- (clamp_tie)
           if comes_before(record, best, first, axis, best_axis, x, y, w, h, dx, dy) then
             best, best_axis = record, axis
           end
@@ -985,7 +983,6 @@ local function crowd_next(self)
     if times[i] ~= t then break end
     local record, axis = region[i], axes[i]
     if record[MARK] < pass then
-      if axis ~= best_axis and t > 0 then self._cross_tie = true end -- (clamp_tie)
       if comes_before(record, best, t, axis, best_axis, x, y, w, h, dx, dy) then
         best, best_axis = record, axis
       end
@@ -1052,26 +1049,22 @@ local function custom_response(self, name, col, w, h, goal_x, goal_y)
   return new_x, new_y, new_x, new_y
 end
 
--- After a leg's nearest found a tie in time across different axes (_cross_tie): the
--- touch in `col`, placed on the face of the record met across `axis` at leg time t (its
--- other coordinate x + dx * t or y + dy * t), moved back onto the face of each record
--- not met yet that the leg enters at the same t across the other axis and that the stop
--- lies inside. Those times round to one t with the faces apart, and the other
--- coordinate could lie an ulp inside such a record, which the next leg would then start
--- in and be let out of, through it (a review found a slide through a ceiling 25 px
--- thick). Only one the stop is inside: the flag can be set by a tie nearest's scan saw
--- before it found a nearer item (the crowd's sort sees only the final time's ties), and
--- clamping onto a record the leg passes above moved the stop an ulp for nothing, and
--- differently in the two paths (a review, 2026-12-07: 4069 of 200000 scenes built for
--- it). Not "only one the leg meets" (leg_time): a slab passed at its corner at that
--- time can still hold the stop, on the wall's exact face, by an ulp, and a slide then
--- went through it (the next review). Known limit: with no tie across axes at the stop's
--- time, the flag is not set and such a slab is not looked for (28 in 22547 of a
--- review's corner cases, as before these changes; README).
--- Only for ties after the leg's start (at 0 the touch is where the leg starts, outside
--- both): ties at 0 are common (a box pressed into a corner of tiles), and with them the
--- flag and this scan cost `luajit bench/world.lua --way bump_boxes --count 1000` 10-20%
--- of its time; ties after the start, none of its moves.
+-- At a stop after the leg's start: the touch in `col`, placed on the face of the record
+-- met across `axis` at leg time t (its other coordinate x + dx * t or y + dy * t), moved
+-- back onto the face of each record not met yet that the leg enters at the same t across
+-- the other axis and that the stop lies inside. Those times round to one t with the
+-- faces apart, and the other coordinate could lie an ulp inside such a record, which the
+-- next leg would then start in and be let out of, through it (a review found a slide
+-- through a ceiling 25 px thick). At every stop, not only after a tie nearest saw (the
+-- _cross_tie flag, 2026-12-06 to 12-07): a slab passed at its corner at that time is not
+-- a candidate nearest offers, and with no tie seen a slide went through it (a review,
+-- 2026-12-07: 28 of 22547 corner cases built for it, every tree before); and a tie seen
+-- before a nearer item set the flag in nearest's scan but not in the crowd's sort, so the
+-- two paths differed. Only one the stop is inside: clamping onto a record the leg passes
+-- above moved the stop an ulp for nothing. Cost (`bench/world.lua --way bump_boxes
+-- --count 1000`, LuaJIT, 7 fresh runs each, interleaved with a88667e, 2026-12-07): 975
+-- against 1027 ns per move, and in a second set 1599 against 1413, ranges overlapping;
+-- Lua 5.4 60175 -> 60369 instructions per move (the flag's tests gone, this scan added).
 local function clamp_tie(self, col, t, axis)
   local x, y, w, h = self._leg_x, self._leg_y, self._w, self._h
   local dx, dy = self._leg_dx, self._leg_dy
@@ -1113,10 +1106,7 @@ local function meet(self, other, t, axis, x, y, goal_x, goal_y)
   self._n = n
   local col = fill_col(col_at(self._out, self._out_pool, n), item, other, answer, t,
     axis, x, y, self._w, self._h, goal_x, goal_y)
-  if self._cross_tie then -- (set by a tie after the start; left set by an ignored one)
-    self._cross_tie = false
-    if t > 0 then clamp_tie(self, col, t, axis) end
-  end
+  if t > 0 then clamp_tie(self, col, t, axis) end -- (at every stop: see clamp_tie)
   if t < 0 or response == "cross" then -- crossed, or let out of it: the leg goes on
     if answer == "slide" then
       local s = col._slide
@@ -1219,7 +1209,6 @@ function plan_move(self, proxy, goal_x, goal_y, filter, list, pool)
   self._item, self._w, self._h = proxy.item, proxy.width, proxy.height
   self._filter, self._out, self._out_pool = filter, list, pool
   self._n = 0
-  self._cross_tie = false -- (one the last move's last leg left set: see clamp_tie)
   self._region_right = -HUGE -- (no region yet: the first leg looks in the hash)
   local x, y = proxy.x, proxy.y
   self._x0, self._y0 = x, y
