@@ -1061,10 +1061,14 @@ end
 -- 2026-12-07: 28 of 22547 corner cases built for it, every tree before); and a tie seen
 -- before a nearer item set the flag in nearest's scan but not in the crowd's sort, so the
 -- two paths differed. Only one the stop is inside: clamping onto a record the leg passes
--- above moved the stop an ulp for nothing. Cost (`bench/world.lua --way bump_boxes
--- --count 1000`, LuaJIT, 7 fresh runs each, interleaved with a88667e, 2026-12-07): 975
--- against 1027 ns per move, and in a second set 1599 against 1413, ranges overlapping;
--- Lua 5.4 60175 -> 60369 instructions per move (the flag's tests gone, this scan added).
+-- above moved the stop an ulp for nothing. At a stop only, not at a col the leg crosses
+-- (its touch is where the leg reaches its face, as computed): a scan of the region for
+-- each crossed col cost k^2 again through a crowd crossed (de54c36: 1024 items crossed,
+-- 8x the instructions of the same items ignored; bump_spec counts them). Cost
+-- (`bench/world.lua --way bump_boxes --count 1000`, LuaJIT, 7 fresh runs each,
+-- interleaved with a88667e, 2026-12-07): 975 against 1027 ns per move, and in a second
+-- set 1599 against 1413, ranges overlapping; Lua 5.4 60175 -> 60369 instructions per
+-- move (the flag's tests gone, this scan added).
 local function clamp_tie(self, col, t, axis)
   local x, y, w, h = self._leg_x, self._leg_y, self._w, self._h
   local dx, dy = self._leg_dx, self._leg_dy
@@ -1106,7 +1110,6 @@ local function meet(self, other, t, axis, x, y, goal_x, goal_y)
   self._n = n
   local col = fill_col(col_at(self._out, self._out_pool, n), item, other, answer, t,
     axis, x, y, self._w, self._h, goal_x, goal_y)
-  if t > 0 then clamp_tie(self, col, t, axis) end -- (at every stop: see clamp_tie)
   if t < 0 or response == "cross" then -- crossed, or let out of it: the leg goes on
     if answer == "slide" then
       local s = col._slide
@@ -1119,6 +1122,7 @@ local function meet(self, other, t, axis, x, y, goal_x, goal_y)
     end
     return nil
   end
+  if t > 0 then clamp_tie(self, col, t, axis) end -- (at every stop: see clamp_tie)
   local touch = col.touch
   if response == "touch" then return true, touch.x, touch.y, touch.x, touch.y end
   if response == "slide" then
