@@ -367,6 +367,71 @@ local function report_crossings(world, cross, is_x, forward, pos, final, size, c
   end
 end
 
+-- True when candidate a of a filtered phase's set comes before b: met nearer along the
+-- path (keys), then added earlier (ids), then by row and column (a layer's tiles).
+local function met_before(keys, ids, rows, cols, a, b)
+  local ka, kb = keys[a], keys[b]
+  if ka ~= kb then return ka < kb end
+  local ia, ib = ids[a], ids[b]
+  if ia ~= ib then return ia < ib end
+  local ra, rb = rows[a] or 0, rows[b] or 0
+  if ra ~= rb then return ra < rb end
+  return (cols[a] or 0) < (cols[b] or 0)
+end
+
+-- Insertion sort of order[first..last] by met_before (stable).
+local function insert_met(keys, ids, rows, cols, order, first, last)
+  for k = first + 1, last do
+    local i = order[k]
+    local j = k - 1
+    while j >= first and met_before(keys, ids, rows, cols, i, order[j]) do
+      order[j + 1] = order[j]
+      j = j - 1
+    end
+    order[j + 1] = i
+  end
+end
+
+-- Candidates a filtered phase sorts by insertion alone; past that, runs of this many,
+-- merged.
+local MET_RUN = 16
+
+-- Sorts order[1..n], indices into `set`, by met_before (stable): by insertion, and past
+-- MET_RUN in runs of MET_RUN merged through set.scratch. By insertion alone (until
+-- 2026-12-07), a move through a pile of k actors its filter passes over cost k^2: 256
+-- piled, each ignored, 1689 ms for 300 moves on Lua 5.4, 56% of it in the insertion.
+local function sort_met(set, order, n)
+  local keys, ids, rows, cols = set.key, set.id, set.row, set.col
+  if n <= MET_RUN then
+    insert_met(keys, ids, rows, cols, order, 1, n)
+    return
+  end
+  for first = 1, n, MET_RUN do
+    insert_met(keys, ids, rows, cols, order, first, first + MET_RUN <= n and first + MET_RUN - 1 or n)
+  end
+  local from, to, width = order, set.scratch, MET_RUN
+  while width < n do
+    for low = 1, n, 2 * width do
+      local mid = low + width - 1
+      if mid > n then mid = n end
+      local high = low + 2 * width - 1
+      if high > n then high = n end
+      local i, j = low, mid + 1
+      for k = low, high do -- (the right run's first only when strictly before: stable)
+        if j > high or (i <= mid and not met_before(keys, ids, rows, cols, from[j], from[i])) then
+          to[k], i = from[i], i + 1
+        else
+          to[k], j = from[j], j + 1
+        end
+      end
+    end
+    from, to, width = to, from, 2 * width
+  end
+  if from ~= order then
+    for k = 1, n do order[k] = from[k] end
+  end
+end
+
 -- axis_phase for an actor with a filter: the filter chooses each thing's response, other
 -- actors and sensors are met too, and the move is looked at in chunks of at least a cell
 -- (at most MAX_STEPS of them), nearest first, so that the work follows the distance to
@@ -417,21 +482,13 @@ local function filtered_phase(world, is_x, pos, cross, size, cross_size, delta, 
       local distance = entry_distance(set, i, is_x, forward, pos, edge, reach, cross, cross_end)
       if distance then
         if distance >= from and distance < to then
-          local key = distance > 0 and distance or 0
-          keys[i] = key
-          local j = met
-          while j >= 1 and (keys[order[j]] > key or (keys[order[j]] == key
-            and (ids[order[j]] > ids[i] or (ids[order[j]] == ids[i]
-            and ((rows[order[j]] or 0) > (rows[i] or 0) or ((rows[order[j]] or 0) == (rows[i] or 0)
-            and (cols[order[j]] or 0) > (cols[i] or 0))))))) do
-            order[j + 1] = order[j]
-            j = j - 1
-          end
-          order[j + 1] = i
+          keys[i] = distance > 0 and distance or 0
           met = met + 1
+          order[met] = i
         end
       end
     end
+    if met > 1 then sort_met(set, order, met) end
     -- ask the filter in that order, up to the first stop
     local best, best_key, touched = nil, nil, 0
     local crossed = world._crossed
@@ -641,6 +698,9 @@ do
     jit.off(move_filtered)
     jit.off(run_phase)
     jit.off(filtered_phase)
+    jit.off(sort_met) -- (and what it calls: the insertion was in filtered_phase before)
+    jit.off(insert_met)
+    jit.off(met_before)
   end
 end
 

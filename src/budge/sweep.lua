@@ -44,6 +44,7 @@ local BELOW_ONE = 1 - 2 ^ -53
 ---@field touch integer[] first_contact's output: indices of the candidates met first
 ---@field normal integer[] and how each was met (NORMAL_X, NORMAL_Y or NORMAL_CORNER)
 ---@field touch_n integer how many of touch/normal are valid
+---@field scratch integer[] scratch of a filtered axis phase's merge sort (move.lua's sort_met)
 
 ---A new, empty candidate set.
 ---@return budge.CandidateSet
@@ -51,7 +52,7 @@ function sweep.new_set()
   return {
     n = 0, x = {}, y = {}, w = {}, h = {}, oneway = {}, other = {}, col = {}, row = {},
     id = {}, response = {}, record = {}, key = {},
-    touch = {}, normal = {}, touch_n = 0,
+    touch = {}, normal = {}, touch_n = 0, scratch = {},
   }
 end
 
