@@ -917,7 +917,7 @@ describe("frame contacts", function()
   -- sorted them by insertion alone until 2026-12-07, k^2 through a pile of k actors its
   -- filter passes over. Interpreter instructions of four moves through 64 and 1024 8x8
   -- actors piled on a 48x48 spot, in hundreds, Lua 5.4: ignored 221 -> 14667 (66x) by
-  -- insertion, 257 -> 5536 (22x) now; crossed 348 -> 18603 (53x), 384 -> 9473 (25x).
+  -- insertion, 224 -> 4668 (21x) now; crossed 348 -> 18603 (53x), 352 -> 8605 (24x).
   it("ask a filter about a pile of actors nearest first, then in the order added, at "
     .. "about k log k (virtual machine instructions, counted by a debug hook)", function()
     local jit = rawget(_G, "jit")

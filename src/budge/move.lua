@@ -367,11 +367,10 @@ local function report_crossings(world, cross, is_x, forward, pos, final, size, c
   end
 end
 
--- True when candidate a of a filtered phase's set comes before b: met nearer along the
--- path (keys), then added earlier (ids), then by row and column (a layer's tiles).
-local function met_before(keys, ids, rows, cols, a, b)
-  local ka, kb = keys[a], keys[b]
-  if ka ~= kb then return ka < kb end
+-- Of two candidates of a filtered phase's set met at the same distance along the path
+-- (keys), true when a comes before b: added earlier (ids), then by row and column (a
+-- layer's tiles).
+local function tie_before(ids, rows, cols, a, b)
   local ia, ib = ids[a], ids[b]
   if ia ~= ib then return ia < ib end
   local ra, rb = rows[a] or 0, rows[b] or 0
@@ -379,36 +378,35 @@ local function met_before(keys, ids, rows, cols, a, b)
   return (cols[a] or 0) < (cols[b] or 0)
 end
 
--- Insertion sort of order[first..last] by met_before (stable).
-local function insert_met(keys, ids, rows, cols, order, first, last)
-  for k = first + 1, last do
-    local i = order[k]
-    local j = k - 1
-    while j >= first and met_before(keys, ids, rows, cols, i, order[j]) do
-      order[j + 1] = order[j]
-      j = j - 1
-    end
-    order[j + 1] = i
-  end
-end
-
 -- Candidates a filtered phase sorts by insertion alone; past that, runs of this many,
 -- merged.
 local MET_RUN = 16
 
--- Sorts order[1..n], indices into `set`, by met_before (stable): by insertion, and past
--- MET_RUN in runs of MET_RUN merged through set.scratch. By insertion alone (until
--- 2026-12-07), a move through a pile of k actors its filter passes over cost k^2: 256
--- piled, each ignored, 1689 ms for 300 moves on Lua 5.4, 56% of it in the insertion.
+-- Sorts order[1..n], indices into `set`, by distance along the path (set.key), then
+-- tie_before (stable): by insertion, and past MET_RUN in runs of MET_RUN merged through
+-- set.scratch. By insertion alone (until 2026-12-07), a move through a pile of k actors
+-- its filter passes over cost k^2: 256 piled, each ignored, 1689 ms for 300 moves on Lua
+-- 5.4 under a line hook, 56% of it in the insertion. (The key compared in line, the
+-- tie-breaks in a call: most candidates are met at distances of their own, and the
+-- moves of a few candidates cost what they did.)
 local function sort_met(set, order, n)
   local keys, ids, rows, cols = set.key, set.id, set.row, set.col
-  if n <= MET_RUN then
-    insert_met(keys, ids, rows, cols, order, 1, n)
-    return
-  end
   for first = 1, n, MET_RUN do
-    insert_met(keys, ids, rows, cols, order, first, first + MET_RUN <= n and first + MET_RUN - 1 or n)
+    local last = first + MET_RUN - 1
+    if last > n then last = n end
+    for k = first + 1, last do
+      local i = order[k]
+      local key = keys[i]
+      local j = k - 1
+      while j >= first and (keys[order[j]] > key
+        or keys[order[j]] == key and tie_before(ids, rows, cols, i, order[j])) do
+        order[j + 1] = order[j]
+        j = j - 1
+      end
+      order[j + 1] = i
+    end
   end
+  if n <= MET_RUN then return end
   local from, to, width = order, set.scratch, MET_RUN
   while width < n do
     for low = 1, n, 2 * width do
@@ -418,10 +416,12 @@ local function sort_met(set, order, n)
       if high > n then high = n end
       local i, j = low, mid + 1
       for k = low, high do -- (the right run's first only when strictly before: stable)
-        if j > high or (i <= mid and not met_before(keys, ids, rows, cols, from[j], from[i])) then
-          to[k], i = from[i], i + 1
+        local a, b = from[i], from[j]
+        if j > high or (i <= mid and not (keys[b] < keys[a]
+          or keys[b] == keys[a] and tie_before(ids, rows, cols, b, a))) then
+          to[k], i = a, i + 1
         else
-          to[k], j = from[j], j + 1
+          to[k], j = b, j + 1
         end
       end
     end
@@ -699,8 +699,7 @@ do
     jit.off(run_phase)
     jit.off(filtered_phase)
     jit.off(sort_met) -- (and what it calls: the insertion was in filtered_phase before)
-    jit.off(insert_met)
-    jit.off(met_before)
+    jit.off(tie_before)
   end
 end
 
