@@ -252,23 +252,20 @@ end
 -- Hits a move sorts by insertion alone; past that, runs of this many, merged.
 local RUN = 16
 
----Sorts the world's hits 1.._n_hits into the order they happened.
----Speed: an insertion sort, not table.sort: a move has a handful of contacts, and
----table.sort's calls back into Lua leave LuaJIT's compiled code. With table.sort the
----world bench's tile moves take 304 ns instead of 232 on LuaJIT, 2454 instead of 2290 on
----Lua 5.4 (`luajit bench/world.lua --profile tiles`, median of 5, 2026-12-01). More than
----RUN hits (a player walking into a pile of coins) are sorted in runs of RUN, merged
----(stable, as the insertion sort: the same order), through a scratch list the world
----keeps: the insertion sort alone took a review's move into 8000 scattered coins 177 ms
----on LuaJIT and 1655 ms on Lua 5.4 (quadratic in the hits).
----@param world budge.World
-function hits.sort(world)
-  local list, n = world._hits, world._n_hits
-  if n <= RUN then sort_run(list, 1, n) return end
-  for first = 1, n, RUN do sort_run(list, first, first + RUN <= n and first + RUN - 1 or n) end
-  local scratch = world._sort_scratch
-  if scratch == nil then scratch = {}; world._sort_scratch = scratch end
-  local from, to, width = list, scratch, RUN
+---Merges list[1..n], sorted in runs of `width` (the last may be shorter), into one
+---sorted run, stable: by `before(a, b, ctx)`, true when a comes strictly before b (an
+---element of the right run goes first only then). Through `scratch` (a table the caller
+---keeps, so that no garbage is made; left holding the elements it last held). Shared by
+---the sorts that must not cost the square of their length: a move's hits, a filtered
+---phase's candidates (move.lua), budge.bump's project.
+---@param list any[]
+---@param n integer
+---@param width integer
+---@param before fun(a: any, b: any, ctx: any): boolean
+---@param ctx any passed to `before`
+---@param scratch any[]
+function hits.merge_runs(list, n, width, before, ctx, scratch)
+  local from, to = list, scratch
   while width < n do
     for low = 1, n, 2 * width do
       local mid = low + width - 1
@@ -276,8 +273,8 @@ function hits.sort(world)
       local high = low + 2 * width - 1
       if high > n then high = n end
       local i, j = low, mid + 1
-      for k = low, high do -- (the right run's hit first only when strictly before: stable)
-        if j > high or (i <= mid and not hit_before(from[j], from[i])) then
+      for k = low, high do -- (the right run's first only when strictly before: stable)
+        if j > high or (i <= mid and not before(from[j], from[i], ctx)) then
           to[k] = from[i]
           i = i + 1
         else
@@ -291,6 +288,25 @@ function hits.sort(world)
   if not rawequal(from, list) then
     for k = 1, n do list[k] = from[k] end
   end
+end
+
+---Sorts the world's hits 1.._n_hits into the order they happened.
+---Speed: an insertion sort, not table.sort: a move has a handful of contacts, and
+---table.sort's calls back into Lua leave LuaJIT's compiled code. With table.sort the
+---world bench's tile moves take 304 ns instead of 232 on LuaJIT, 2454 instead of 2290 on
+---Lua 5.4 (`luajit bench/world.lua --profile tiles`, median of 5, 2026-12-01). More than
+---RUN hits (a player walking into a pile of coins) are sorted in runs of RUN, merged
+---(hits.merge_runs), through a scratch list the world keeps: the insertion sort alone
+---took a review's move into 8000 scattered coins 177 ms on LuaJIT and 1655 ms on Lua 5.4
+---(quadratic in the hits).
+---@param world budge.World
+function hits.sort(world)
+  local list, n = world._hits, world._n_hits
+  if n <= RUN then sort_run(list, 1, n) return end
+  for first = 1, n, RUN do sort_run(list, first, first + RUN <= n and first + RUN - 1 or n) end
+  local scratch = world._sort_scratch
+  if scratch == nil then scratch = {}; world._sort_scratch = scratch end
+  hits.merge_runs(list, n, RUN, hit_before, nil, scratch)
 end
 
 return hits

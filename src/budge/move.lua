@@ -35,7 +35,7 @@ local tile_line, list_line, line_pair = layer.tile_line, layer.list_line, layer.
 local gather, clip_to_boxes, clip_to_bounds = solids.gather, solids.clip_to_boxes,
   solids.clip_to_bounds
 local gather_sensors, gather_all = solids.gather_sensors, solids.gather_all
-local response_of = hits.response
+local response_of, merge_runs = hits.response, hits.merge_runs
 local stop_forward, stop_backward, box_enter = sweep.stop_forward, sweep.stop_backward,
   sweep.box_enter
 local add_hit, has_tile, add_tile_hits, add_line_pair = hits.add, hits.has_tile,
@@ -378,15 +378,22 @@ local function tie_before(ids, rows, cols, a, b)
   return (cols[a] or 0) < (cols[b] or 0)
 end
 
+-- sort_met's order for hits.merge_runs: a before b in `set`.
+local function met_before(a, b, set)
+  local keys = set.key
+  local ka, kb = keys[a], keys[b]
+  return ka < kb or ka == kb and tie_before(set.id, set.row, set.col, a, b)
+end
+
 -- Candidates a filtered phase sorts by insertion alone; past that, runs of this many,
 -- merged.
 local MET_RUN = 16
 
 -- Sorts order[1..n], indices into `set`, by distance along the path (set.key), then
--- tie_before (stable): by insertion, and past MET_RUN in runs of MET_RUN merged through
--- set.scratch. By insertion alone (until 2026-12-07), a move through a pile of k actors
--- its filter passes over cost k^2: 256 piled, each ignored, 1689 ms for 300 moves on Lua
--- 5.4 under a line hook, 56% of it in the insertion. (The key compared in line, the
+-- tie_before (stable): by insertion, and past MET_RUN in runs of MET_RUN merged
+-- (hits.merge_runs, through set.scratch). By insertion alone (until 2026-12-07), a move
+-- through a pile of k actors its filter passes over cost k^2: 256 piled, each ignored,
+-- 1689 ms for 300 moves on Lua 5.4 under a line hook, 56% of it in the insertion. (The key compared in line, the
 -- tie-breaks in a call: most candidates are met at distances of their own, and the
 -- moves of a few candidates cost what they did.)
 local function sort_met(set, order, n)
@@ -406,30 +413,7 @@ local function sort_met(set, order, n)
       order[j + 1] = i
     end
   end
-  if n <= MET_RUN then return end
-  local from, to, width = order, set.scratch, MET_RUN
-  while width < n do
-    for low = 1, n, 2 * width do
-      local mid = low + width - 1
-      if mid > n then mid = n end
-      local high = low + 2 * width - 1
-      if high > n then high = n end
-      local i, j = low, mid + 1
-      for k = low, high do -- (the right run's first only when strictly before: stable)
-        local a, b = from[i], from[j]
-        if j > high or (i <= mid and not (keys[b] < keys[a]
-          or keys[b] == keys[a] and tie_before(ids, rows, cols, b, a))) then
-          to[k], i = a, i + 1
-        else
-          to[k], j = b, j + 1
-        end
-      end
-    end
-    from, to, width = to, from, 2 * width
-  end
-  if from ~= order then
-    for k = 1, n do order[k] = from[k] end
-  end
+  if n > MET_RUN then merge_runs(order, n, MET_RUN, met_before, set, set.scratch) end
 end
 
 -- axis_phase for an actor with a filter: the filter chooses each thing's response, other
@@ -700,6 +684,7 @@ do
     jit.off(filtered_phase)
     jit.off(sort_met) -- (and what it calls: the insertion was in filtered_phase before)
     jit.off(tie_before)
+    jit.off(met_before)
   end
 end
 
