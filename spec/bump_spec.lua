@@ -1109,14 +1109,18 @@ describe("budge.bump", function()
     -- nearest alone tells it (_crowd_work huge), whether the sort starts at the first
     -- candidate (0) or past CROWD_WORK (the default).
     local ANSWERS = {false, false, false, "cross", "cross", "cross", "slide", "touch", "bounce"}
-    local function story(seed, crowd_work)
+    local function story(seed, crowd_work, stacked)
       local rng = random_source.new(seed)
       local world = bump.newWorld(32)
       if crowd_work then world._crowd_work = crowd_work end
       local log, longest = {}, 0
-      for id = 1, rng(20, 70) do
-        world:add({id = id, answer = ANSWERS[rng(1, #ANSWERS)]}, 40 + 2 * rng(0, 30),
-          40 + 2 * rng(0, 30), 2 * rng(1, 6), 2 * rng(1, 6))
+      local id = 0
+      for _ = 1, rng(20, 70) do
+        local x, y, w, h = 40 + 2 * rng(0, 30), 40 + 2 * rng(0, 30), 2 * rng(1, 6), 2 * rng(1, 6)
+        for _ = 1, stacked and rng(1, 8) or 1 do -- (stacked: exactly on one another)
+          id = id + 1
+          world:add({id = id, answer = ANSWERS[rng(1, #ANSWERS)]}, x, y, w, h)
+        end
       end
       local mover = {id = 0}
       world:add(mover, 2 * rng(0, 70), 2 * rng(0, 70), 2 * rng(1, 5), 2 * rng(1, 5))
@@ -1161,6 +1165,16 @@ describe("budge.bump", function()
       -- (the scenes do what they are for: the sort ran on most, and ties were met)
       assert.is_true(sorted > 100, "sorted " .. sorted)
       assert.is_true(ties > 100, "ties " .. ties)
+    end)
+
+    it("meets items stacked exactly on one another as nearest alone does", function()
+      -- (a run of candidates at one time, sorted once where comes_before orders it
+      -- wholly, sort_run; scanned at each round where it does not)
+      for seed = 1, 100 do
+        local expected = story(seed, math.huge, true)
+        assert.same(expected, (story(seed, 0, true)))
+        assert.same(expected, (story(seed, nil, true)))
+      end
     end)
 
     it("clamps a stop only onto an item the leg meets at the same time (a review's scene)",
@@ -1313,6 +1327,30 @@ describe("budge.bump", function()
       assert.same({0, 8 * 367}, {none, crossed}) -- (367 of the 1024 in the mover's row)
       assert.is_true(many < 64 * few, ("64 -> 1024 items: %d -> %d"):format(few, many))
       assert.is_true(crossing < 1.5 * many, ("1024 crossed %d, ignored %d"):format(crossing, many))
+      -- items stacked exactly on one another: all met at one time, a run scanned at each
+      -- of its rounds until 2026-12-07 (64 -> 1024 ignored 10049 -> 2272640, 226x; now
+      -- 3170 -> 57114, 18x)
+      local function stacked(count)
+        local world = bump.newWorld(64)
+        for i = 1, count do world:add({id = i}, 110, 108, 8, 8) end
+        world:add("m", 60, 110, 8, 8)
+        local x = 60
+        local function step() x = world:move("m", x < 100 and 140 or 60, 110, function() end) end
+        step()
+        if jit then
+          jit.off()
+          jit.flush()
+        end
+        local n = 0
+        debug.sethook(function() n = n + 1 end, "", 100)
+        for _ = 1, 4 do step() end
+        debug.sethook()
+        if jit then jit.on() end
+        return n
+      end
+      local stack_few, stack_many = stacked(64), stacked(1024)
+      assert.is_true(stack_many < 64 * stack_few,
+        ("64 -> 1024 stacked items: %d -> %d"):format(stack_few, stack_many))
       -- world:project along the same path: its collisions sorted by insertion alone
       -- until 2026-12-07, 64 -> 1024 items 361 -> 35401 (98x), now 367 -> 10968 (30x)
       local projected = {}

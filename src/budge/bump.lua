@@ -509,6 +509,7 @@ function bump.newWorld(cell_size)
     _project_cols = {}, _project_pool = {},
     _found = {}, _found_t = {}, _found_key = {},
     _crowd = {}, _crowd_t = {}, _crowd_axis = {}, _crowd_n = 0, _crowd_at = 1, -- (CROWD_WORK)
+    _crowd_run = 0, _crowd_keys = {{}, {}, false}, -- (sort_run)
     _crowd_work = CROWD_WORK, -- (specs: huge, never sorted, or 0, from the first candidate)
     _projecting = false, -- a project is running (one its filter calls gets lists of its own)
     _sort_scratch = {},
@@ -874,10 +875,10 @@ end
 -- would have scanned more than CROWD_WORK records of its region, its remaining
 -- candidates are worked out once and sorted by time (then by place in the region,
 -- nearest's scan order), and each round takes the next: the same candidates in the same
--- order as nearest gives (a run of candidates at one time goes by comes_before in the
--- region's order, as nearest's scan compares them; bump_spec compares both paths), in
--- k log k, but for such runs, scanned again at each of their rounds (items piled exactly
--- on one another all meet the leg at one time: k^2 comes_before calls). Below the
+-- order as nearest gives (a run of candidates at one time goes by comes_before: sorted
+-- by it once where it orders the run wholly, else scanned in the region's order at each
+-- of the run's rounds, as nearest's scan compares them, see sort_run; bump_spec compares
+-- both paths), in k log k. Below the
 -- budget, nearest alone: a common move's path is as it was (its region holds 2 to 7
 -- records). `luajit bench/bump_crowds.lua --one W K A M` (5 fresh runs each, interleaved
 -- with the tree before and bump.lua 3.1.7, medians, 2026-12-07), 256 items piled in the
@@ -923,27 +924,42 @@ local function earlier(times, a, b)
   return ta < tb or ta == tb and a < b
 end
 
--- Sorts order[1 .. n] by earlier, in place: a heap sort, in Lua (LuaJIT compiles it;
--- table.sort is a C function calling a Lua comparator, which it does not), with no
--- recursion and no garbage.
-local function sift_down(order, times, root, n)
-  local value = order[root]
+-- A tie run's order (crowd_next), when comes_before is a total order on it: a before b
+-- when its face is nearer along the leg (the keys are 0 when the faces do not count), then
+-- its centre nearer, then it was added earlier. keys: {faces, distances} by region index.
+local function run_before(keys, a, b)
+  local faces, distances = keys[1], keys[2]
+  local fa, fb = faces[a], faces[b]
+  if fa ~= fb then return fa > fb end
+  local da, db = distances[a], distances[b]
+  if da ~= db then return da < db end
+  return keys[3][a].id < keys[3][b].id
+end
+
+-- Sorts order[first..last] by precedes(ctx, a, b) (a strict total order), in place: a heap
+-- sort, in Lua (LuaJIT compiles it; table.sort is a C function calling a Lua comparator,
+-- which it does not), with no recursion and no garbage.
+local function sift_down(order, base, root, n, precedes, ctx)
+  local value = order[base + root]
   while true do
     local child = 2 * root
     if child > n then break end
-    if child < n and earlier(times, order[child], order[child + 1]) then child = child + 1 end
-    if not earlier(times, value, order[child]) then break end
-    order[root] = order[child]
+    if child < n and precedes(ctx, order[base + child], order[base + child + 1]) then
+      child = child + 1
+    end
+    if not precedes(ctx, value, order[base + child]) then break end
+    order[base + root] = order[base + child]
     root = child
   end
-  order[root] = value
+  order[base + root] = value
 end
 
-local function sort_by_time(order, times, n)
-  for root = floor(n / 2), 1, -1 do sift_down(order, times, root, n) end
-  for last = n, 2, -1 do
-    order[1], order[last] = order[last], order[1]
-    sift_down(order, times, 1, last - 1)
+local function heap_sort(order, first, last, precedes, ctx)
+  local base, n = first - 1, last - first + 1
+  for root = floor(n / 2), 1, -1 do sift_down(order, base, root, n, precedes, ctx) end
+  for top = n, 2, -1 do
+    order[base + 1], order[base + top] = order[base + top], order[base + 1]
+    sift_down(order, base, 1, top - 1, precedes, ctx)
   end
 end
 
@@ -963,13 +979,49 @@ local function crowd_order(self)
       end
     end
   end
-  sort_by_time(order, times, n)
-  self._crowd_n, self._crowd_at = n, 1
+  heap_sort(order, 1, n, earlier, times)
+  self._crowd_n, self._crowd_at, self._crowd_run = n, 1, 0
+end
+
+-- Sorts the run of candidates at one time that begins at `at` (order[at..last]) by
+-- comes_before, when that is a total order on it (all entered across one axis, or
+-- overlapping at the start, where only distances count), and returns true; false when
+-- it is not (some entered across x and some across y, after the start: the faces of
+-- those across one axis are compared, and the distances across the two, which can go
+-- round in a circle, so that only nearest's scan in the region's order tells which
+-- comes first). Items piled exactly on one another all meet a leg at one time: scanned
+-- at each of its k rounds, such a run cost k^2 comes_before calls (1024 piled, each
+-- ignored: 226x the instructions of 64 on Lua 5.4), sorted, k log k.
+local function sort_run(self, at, last, t)
+  local order, axes, region = self._crowd, self._crowd_axis, self._region
+  local axis = axes[order[at]]
+  if t >= 0 then
+    for j = at + 1, last do
+      if axes[order[j]] ~= axis then return false end
+    end
+  end
+  local keys = self._crowd_keys
+  local faces, distances = keys[1], keys[2]
+  keys[3] = region
+  local x, y, w, h = self._leg_x, self._leg_y, self._w, self._h
+  local d = axis == 1 and self._leg_dx or self._leg_dy
+  for j = at, last do
+    local i = order[j]
+    local record = region[i]
+    local rx, ry, rw, rh = record[1], record[2], record[3], record[4]
+    faces[i] = t >= 0 and near_face(axis, d, rx, ry, rw, rh) or 0
+    distances[i] = square_distance(x, y, w, h, rx, ry, rw, rh)
+  end
+  heap_sort(order, at, last, run_before, keys)
+  keys[3] = false -- (the region is the world's: no reference kept past the sort)
+  return true
 end
 
 -- The next candidate of the crowd: what nearest would return (its record, leg time and
 -- axis; nil when none is left). Of the first run of candidates not marked yet that share
--- one time, the one comes_before puts first, in the region's order, as nearest's scan.
+-- one time, the one comes_before puts first, in the region's order, as nearest's scan:
+-- a run of two or more is sorted by it once where it is a total order (sort_run), and
+-- read in that order; else scanned at each round.
 local function crowd_next(self)
   local order, times, axes, region = self._crowd, self._crowd_t, self._crowd_axis,
     self._region
@@ -978,20 +1030,28 @@ local function crowd_next(self)
   self._crowd_at = at
   if at > n then return nil, HUGE, 0 end
   local t = times[order[at]]
-  local best, best_axis = region[order[at]], axes[order[at]]
-  local x, y, w, h = self._leg_x, self._leg_y, self._w, self._h
-  local dx, dy = self._leg_dx, self._leg_dy
-  for j = at + 1, n do
-    local i = order[j]
-    if times[i] ~= t then break end
-    local record, axis = region[i], axes[i]
-    if record[MARK] < pass then
-      if comes_before(record, best, t, axis, best_axis, x, y, w, h, dx, dy) then
-        best, best_axis = record, axis
+  if at > self._crowd_run then -- (else inside a sorted run: the first not marked is it)
+    local last = at
+    while last < n and times[order[last + 1]] == t do last = last + 1 end
+    if last == at or sort_run(self, at, last, t) then
+      self._crowd_run = last
+    else
+      local best, best_axis = region[order[at]], axes[order[at]]
+      local x, y, w, h = self._leg_x, self._leg_y, self._w, self._h
+      local dx, dy = self._leg_dx, self._leg_dy
+      for j = at + 1, last do
+        local i = order[j]
+        local record, axis = region[i], axes[i]
+        if record[MARK] < pass then
+          if comes_before(record, best, t, axis, best_axis, x, y, w, h, dx, dy) then
+            best, best_axis = record, axis
+          end
+        end
       end
+      return best, t, best_axis
     end
   end
-  return best, t, best_axis
+  return region[order[at]], t, axes[order[at]]
 end
 
 -- Fills col for meeting `record` at leg time t (see leg_candidates) on the leg from (x, y)
