@@ -1167,6 +1167,36 @@ describe("budge.bump", function()
       assert.is_true(ties > 100, "ties " .. ties)
     end)
 
+    it("meets a tie run once each, sorted after some of it was scanned (a review's scene)",
+      function()
+      -- W, 32 and 6 touch the mover's left face at t = 0, 1 its top face: a run across
+      -- both axes, scanned; once W and 1 are passed over, what is left of it is across x
+      -- and is sorted, and the sort put 32 (met, crossed) first again: asked twice, two
+      -- cols for it (ed6f48b, with the 300 records of padding past CROWD_WORK)
+      local answers = {W = false, [32] = "cross", [1] = false, [6] = "touch"}
+      for _, work in ipairs({math.huge, 0, false}) do
+        local world = bump.newWorld(32)
+        if work then world._crowd_work = work end
+        for _ = 1, 300 do world:add({id = "pad"}, 42.25, 50, 0.5, 0.5) end -- (never met)
+        world:add({id = 1}, 39, 30, 15, 6)
+        world:add({id = 6}, 36, 36, 12, 9)
+        world:add({id = 32}, 45, 45, 3, 9)
+        world:add({id = "W"}, 45, 40, 3, 9)
+        local mover = {id = 0}
+        world:add(mover, 48, 36, 15, 15)
+        local asked = {}
+        local x, y, cols, len = world:move(mover, 42, 30, function(_, other)
+          asked[#asked + 1] = tostring(other.id)
+          return answers[other.id]
+        end)
+        local met = {}
+        for i = 1, len do met[i] = tostring(cols[i].other.id) .. " " .. cols[i].type end
+        assert.same({"W 32 1 6", "32 cross", "6 touch", 48, 36},
+          {table.concat(asked, " "), met[1], met[2], x, y})
+        assert.are.equal(2, len)
+      end
+    end)
+
     it("meets items stacked exactly on one another as nearest alone does", function()
       -- (a run of candidates at one time, sorted once where comes_before orders it
       -- wholly, sort_run; scanned at each round where it does not)

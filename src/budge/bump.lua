@@ -1035,6 +1035,10 @@ local function crowd_next(self)
     while last < n and times[order[last + 1]] == t do last = last + 1 end
     if last == at or sort_run(self, at, last, t) then
       self._crowd_run = last
+      -- (the sort may have put first a record of the run met at an earlier round, when the
+      -- run was scanned: some of it entered across the other axis, then met)
+      while region[order[at]][MARK] >= pass do at = at + 1 end
+      self._crowd_at = at
     else
       local best, best_axis = region[order[at]], axes[order[at]]
       local x, y, w, h = self._leg_x, self._leg_y, self._w, self._h
@@ -1412,6 +1416,9 @@ local COL_RUN = 16
 -- COL_RUN merged (hits.merge_runs, through `scratch`). By insertion alone (until
 -- 2026-12-07), project through k items piled in its way cost k^2: 1024 piled items, 367
 -- collisions, 98x the interpreter instructions of 64 (Lua 5.4), now 30x (bump_spec).
+-- The same order, but where col_before goes round in a circle (faces an ulp apart whose
+-- times round to one ti, against a col entered across the other axis at that ti: by
+-- face, then by distance), which the insertion and the merge can break in other places.
 local function sort_cols(list, n, scratch)
   for first = 1, n, COL_RUN do
     local last = first + COL_RUN - 1
