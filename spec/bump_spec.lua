@@ -1102,6 +1102,35 @@ describe("budge.bump", function()
     end)
   end)
 
+  describe("project's lists", function()
+    it("returns project's cols whole after a longer project sorted its list (a review's "
+      .. "scene)", function()
+      -- (the last project's list, sorted, held the pool's records in another order, and
+      -- cut took the item and the other out of records this call returned: a game's item
+      -- not in the world, and an other the filter removed; 2026-12-07 until this)
+      local world = bump.newWorld(64)
+      for i = 1, 6 do world:add({id = i}, 100 - 10 * i, 0, 5, 5) end
+      local ghost = {id = "ghost"} -- (not in the world: where could it go?)
+      world:project(ghost, 0, 0, 5, 5, 100, 0)
+      local cols, len = world:project(ghost, 0, 0, 5, 5, 60, 0)
+      local seen = {}
+      for i = 1, len do seen[i] = cols[i].item.id .. " " .. cols[i].other.id end
+      assert.same({"ghost 6", "ghost 5", "ghost 4"}, seen)
+      local me = {id = "me"}
+      world:add(me, 0, 0, 5, 5)
+      world:project(me, 0, 0, 5, 5, 100, 0)
+      cols, len = world:project(me, 0, 0, 5, 5, 60, 0, function(_, other)
+        world:remove(other)
+        return "cross"
+      end)
+      seen = {}
+      for i = 1, len do seen[i] = cols[i].item.id .. " " .. cols[i].other.id end
+      assert.same({"me 6", "me 5", "me 4"}, seen)
+      assert.same({false, false, false}, {world:hasItem(cols[1].other),
+        world:hasItem(cols[2].other), world:hasItem(cols[3].other)})
+    end)
+  end)
+
   describe("a leg through a crowd (past CROWD_WORK it sorts the rest)", function()
     -- Piles of items on a 2 px grid (many meet the leg at the same ti, across the same face
     -- or different ones), each answering by its kind; a mover sent through them. The whole

@@ -1493,6 +1493,11 @@ function World:project(item, x, y, w, h, goal_x, goal_y, filter)
       rawset(col, "bounce", nil)
     end
   end
+  -- (past n, the last project's records as the pool holds them: its sort left the list in
+  -- another order, and cut, below, would have taken the item and other out of a record
+  -- this call returns, when the game's item is not in the world or the filter removed
+  -- the other; a review, 2026-12-07)
+  for i = n + 1, #list do list[i] = pool[i] end
   local kept = 0
   for i = 1, n do
     local col = list[i]
