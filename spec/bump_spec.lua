@@ -4,6 +4,7 @@ local bump = require("budge.bump")
 local budge = require("budge")
 local garbage = require("fixtures.garbage")
 local random_source = require("fixtures.random")
+local instructions = require("spec.support.instructions")
 
 -- bump.lua 3.1.7 itself, the oracle where budge's rules and bump's agree (nil when the
 -- peer is not beside the repository)
@@ -1354,7 +1355,6 @@ describe("budge.bump", function()
     -- 177420 (390x: k^2); de54c36 clamped each crossed col over the whole region (crossed
     -- 1024: 116689, 8x the ignored).
     it("costs about k log k through a crowd of k, crossed, ignored or projected", function()
-      local jit = rawget(_G, "jit")
       local function cost(count, answer)
         local world = bump.newWorld(64)
         local random = random_source.new(20261207)
@@ -1369,16 +1369,7 @@ describe("budge.bump", function()
           crossed = crossed + len
         end
         for _ = 1, 4 do step() end
-        if jit then -- (the hook counts in the interpreter alone)
-          jit.off()
-          jit.flush()
-        end
-        local n = 0
-        debug.sethook(function() n = n + 1 end, "", 100)
-        for _ = 1, 4 do step() end
-        debug.sethook()
-        if jit then jit.on() end
-        return n, crossed
+        return instructions(function() for _ = 1, 4 do step() end end), crossed
       end
       local few = cost(64, nil)
       local many, none = cost(1024, nil)
@@ -1396,16 +1387,7 @@ describe("budge.bump", function()
         local x = 60
         local function step() x = world:move("m", x < 100 and 140 or 60, 110, function() end) end
         step()
-        if jit then
-          jit.off()
-          jit.flush()
-        end
-        local n = 0
-        debug.sethook(function() n = n + 1 end, "", 100)
-        for _ = 1, 4 do step() end
-        debug.sethook()
-        if jit then jit.on() end
-        return n
+        return instructions(function() for _ = 1, 4 do step() end end)
       end
       local stack_few, stack_many = stacked(64), stacked(1024)
       assert.is_true(stack_many < 64 * stack_few,
@@ -1423,15 +1405,8 @@ describe("budge.bump", function()
           return len
         end
         project()
-        if jit then
-          jit.off()
-          jit.flush()
-        end
-        local n = 0
-        debug.sethook(function() n = n + 1 end, "", 100)
-        local len = project()
-        debug.sethook()
-        if jit then jit.on() end
+        local len
+        local n = instructions(function() len = project() end)
         projected[#projected + 1] = {n, len}
       end
       assert.same({19, 367}, {projected[1][2], projected[2][2]})

@@ -7,6 +7,7 @@ local box = require("fixtures.box")
 local garbage = require("fixtures.garbage")
 local random_source = require("fixtures.random")
 local scale = require("spec.support.scale")
+local instructions = require("spec.support.instructions")
 
 local function trace(x, y, n, hits)
   local parts = {string.format("%.17g %.17g %d", x, y, n)}
@@ -845,23 +846,13 @@ describe("frame contacts", function()
     -- quadratic: 648 -> 5384, 1649 -> 21589, 88502 -> 1414002, 1004 -> 13088 (contacts
     -- pruned along x alone, walked every pair of sensors and of actors without filters,
     -- and sorted by insertion alone).
-    local jit = rawget(_G, "jit")
-    local function instructions(build)
+    local function contacts_cost(build)
       local world, frame = build()
       world:contacts()
       frame()
       world:contacts()
       frame()
-      if jit then -- (the hook counts in the interpreter alone)
-        jit.off()
-        jit.flush()
-      end
-      local count = 0
-      debug.sethook(function() count = count + 1 end, "", 100)
-      world:contacts()
-      debug.sethook()
-      if jit then jit.on() end
-      return count
+      return instructions(function() world:contacts() end)
     end
     local cases = {
       {"coins up a tall level, few actors", 2, function(size)
@@ -906,8 +897,8 @@ describe("frame contacts", function()
     }
     for _, case in ipairs(cases) do
       local name, most, build = case[1], case[2], case[3]
-      local small = instructions(function() return build(400) end)
-      local large = instructions(function() return build(1600) end)
+      local small = contacts_cost(function() return build(400) end)
+      local large = contacts_cost(function() return build(1600) end)
       assert.is_true(large < most * small, ("%s: %d -> %d instructions (x100)"):format(name,
         small, large))
     end
@@ -920,7 +911,6 @@ describe("frame contacts", function()
   -- insertion, 224 -> 4668 (21x) now; crossed 348 -> 18603 (53x), 352 -> 8605 (24x).
   it("ask a filter about a pile of actors nearest first, then in the order added, at "
     .. "about k log k (virtual machine instructions, counted by a debug hook)", function()
-    local jit = rawget(_G, "jit")
     local function pile(count, answer)
       local world = budge.new_world()
       local rng = random_source.new(20261207)
@@ -953,24 +943,15 @@ describe("frame contacts", function()
     for i = 1, #expected do -- (the same actors, not equal copies: several share a box)
       assert.is_true(rawequal(expected[i], asked[i]), "asked out of order at " .. i)
     end
-    local function instructions(count, answer)
+    local function cost(count, answer)
       local pile_world, pile_mover, _, pile_asked = pile(count, answer)
       local function step() pile_world:move(pile_mover, pile_mover.x < 100 and 80 or -80, 0) end
       for _ = 1, 4 do step() end
-      if jit then -- (the hook counts in the interpreter alone)
-        jit.off()
-        jit.flush()
-      end
-      local c = 0
-      debug.sethook(function() c = c + 1 end, "", 100)
-      for _ = 1, 4 do step() end
-      debug.sethook()
-      if jit then jit.on() end
-      return c, #pile_asked
+      return instructions(function() for _ = 1, 4 do step() end end), #pile_asked
     end
     for _, answer in ipairs({false, "cross"}) do
-      local few = instructions(64, answer)
-      local many, calls = instructions(1024, answer)
+      local few = cost(64, answer)
+      local many, calls = cost(1024, answer)
       assert.are.equal(8 * 367, calls) -- (367 of the 1024 in the mover's rows, each move)
       assert.is_true(many < 40 * few, ("%s: 64 -> 1024 actors, %d -> %d instructions (x100)")
         :format(tostring(answer), few, many))

@@ -22,7 +22,7 @@ local hash_module = require(here .. ".hash")
 local sweep = require(here .. ".sweep")
 local entry = require(here .. ".entry")
 local world_module = require(here .. ".world")
-local merge_runs = require(here .. ".hits").merge_runs
+local sort_runs = require(here .. ".hits").sort_runs
 
 local describe, is_finite = box.describe, box.is_finite
 -- LuaJIT takes the branch-free form of nearest (math.min and math.max compile to no
@@ -343,7 +343,7 @@ local ENGINE = {[touch_response] = "touch", [cross_response] = "cross",
 ---@field package _found_t number[] its entry fractions (segments)
 ---@field package _found_key number[] where the infinite line enters each (segments)
 ---@field package _projecting boolean a project is running (a nested one gets new lists)
----@field package _sort_scratch table[] project's merge of its cols (sort_cols; left empty)
+---@field package _sort_scratch table[] project's merge of its cols (hits.sort_runs; left empty)
 local World = {}
 World.__index = World
 
@@ -1409,35 +1409,14 @@ local function col_before(a, b)
     < square_distance(ir.x, ir.y, ir.w, ir.h, br.x, br.y, br.w, br.h)
 end
 
--- Cols project sorts by insertion alone; past that, runs of this many, merged.
+-- project sorts its cols by col_before, stable, by insertion alone up to COL_RUN and past
+-- that in runs of COL_RUN merged (hits.sort_runs). By insertion alone (until 2026-12-07),
+-- project through k items piled in its way cost k^2: 1024 piled items, 367 collisions,
+-- 98x the interpreter instructions of 64 (Lua 5.4), now 30x (bump_spec). The same order,
+-- but where col_before goes round in a circle (faces an ulp apart whose times round to
+-- one ti, against a col entered across the other axis at that ti: by face, then by
+-- distance), which the insertion and the merge can break in other places.
 local COL_RUN = 16
-
--- Sorts list[1..n] by col_before, stable: by insertion, and past COL_RUN in runs of
--- COL_RUN merged (hits.merge_runs, through `scratch`). By insertion alone (until
--- 2026-12-07), project through k items piled in its way cost k^2: 1024 piled items, 367
--- collisions, 98x the interpreter instructions of 64 (Lua 5.4), now 30x (bump_spec).
--- The same order, but where col_before goes round in a circle (faces an ulp apart whose
--- times round to one ti, against a col entered across the other axis at that ti: by
--- face, then by distance), which the insertion and the merge can break in other places.
-local function sort_cols(list, n, scratch)
-  for first = 1, n, COL_RUN do
-    local last = first + COL_RUN - 1
-    if last > n then last = n end
-    for k = first + 1, last do
-      local col = list[k]
-      local j = k - 1
-      while j >= first and col_before(col, list[j]) do
-        list[j + 1] = list[j]
-        j = j - 1
-      end
-      list[j + 1] = col
-    end
-  end
-  if n > COL_RUN then
-    merge_runs(list, n, COL_RUN, col_before, nil, scratch)
-    for k = 1, n do scratch[k] = nil end -- (a nested project's cols are its own: let go)
-  end
-end
 
 ---world:project(item, x, y, w, h, goalX, goalY, filter): every collision the rectangle
 ---would have moving in a straight line to the goal (default: it stays), sorted by ti,
@@ -1508,7 +1487,7 @@ function World:project(item, x, y, w, h, goal_x, goal_y, filter)
       list[i], list[kept] = list[kept], col -- (what was at kept was left out)
     end
   end
-  if kept > 1 then sort_cols(list, kept, self._sort_scratch) end
+  if kept > 1 then sort_runs(list, kept, COL_RUN, col_before, nil, self._sort_scratch) end
   cut(list, kept, self._proxies)
   self._projecting = nested
   return list, kept

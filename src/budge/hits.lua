@@ -290,6 +290,36 @@ function hits.merge_runs(list, n, width, before, ctx, scratch)
   end
 end
 
+---Sorts list[1..n] by `before(a, b, ctx)` (true when a comes strictly before b),
+---stable: by insertion in runs of `width`, then merge_runs through `scratch`, which it
+---leaves empty. For sorts off the move's compiled path (budge.bump's project): hits.sort
+---and move.lua's sort_met keep their comparisons in line.
+---@param list any[]
+---@param n integer
+---@param width integer
+---@param before fun(a: any, b: any, ctx: any): boolean
+---@param ctx any passed to `before`
+---@param scratch any[]
+function hits.sort_runs(list, n, width, before, ctx, scratch)
+  for first = 1, n, width do
+    local last = first + width - 1
+    if last > n then last = n end
+    for k = first + 1, last do
+      local value = list[k]
+      local j = k - 1
+      while j >= first and before(value, list[j], ctx) do
+        list[j + 1] = list[j]
+        j = j - 1
+      end
+      list[j + 1] = value
+    end
+  end
+  if n > width then
+    hits.merge_runs(list, n, width, before, ctx, scratch)
+    for k = 1, n do scratch[k] = nil end
+  end
+end
+
 ---Sorts the world's hits 1.._n_hits into the order they happened.
 ---Speed: an insertion sort, not table.sort: a move has a handful of contacts, and
 ---table.sort's calls back into Lua leave LuaJIT's compiled code. With table.sort the
