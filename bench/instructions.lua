@@ -12,7 +12,8 @@
 -- at the start and at the end of the timed frames, so the second part holds them alone.
 -- Prints instructions, first-level data cache misses and last-level misses per move, the
 -- last level modelled as 512 KB, 8-way (one core's L2 on the EPYC machines these benches
--- run on: the L3 beyond it is shared with other tenants). With `--traces N` on LuaJIT,
+-- run on: the L3 beyond it is shared with other tenants; BUDGE_LL=size,ways,line sets
+-- another, 2097152,16,64 for the 2 MB L2 of the Xeon machines). With `--traces N` on LuaJIT,
 -- also the N traces that run the most instructions per move, by where each starts, with
 -- the last-level misses of each (the machine code a miss happened in: a trace's loads).
 -- What these do not tell: time. The real machine prefetches, and its L3 holds what the
@@ -67,7 +68,7 @@ os.remove(directory)
 assert(os.execute("mkdir -p " .. shell_quote(directory)))
 local map = options.traces > 0 and directory .. "/map.txt" or ""
 local command = table.concat({"valgrind --tool=callgrind --dump-before=clock",
-  "--cache-sim=yes --LL=524288,8,64", map ~= "" and "--dump-instr=yes" or "",
+  "--cache-sim=yes --LL=${BUDGE_LL:-524288,8,64}", map ~= "" and "--dump-instr=yes" or "",
   "--callgrind-out-file=" .. shell_quote(directory .. "/out"), options.lua,
   "bench/instructions.lua --inner 1",
   ("--way %s --count %d --frames %d --seed %d"):format(options.way, options.count,
@@ -149,10 +150,11 @@ os.execute("rm -rf " .. shell_quote(directory))
 
 local function per_move(name) return (totals[name] or 0) / moves end
 print(("%s%s, %d actors, %s, %d timed frames: %.0f instructions, %.2f D1 misses, %.2f "
-  .. "last-level misses (512 KB model) per move"):format(options.way,
+  .. "last-level misses (%d KB model) per move"):format(options.way,
   options.method ~= "" and " (" .. options.method .. ")" or "", options.count,
   options.lua, options.frames, per_move("Ir"),
-  per_move("D1mr") + per_move("D1mw"), per_move("DLmr") + per_move("DLmw")))
+  per_move("D1mr") + per_move("D1mw"), per_move("DLmr") + per_move("DLmw"),
+  math.floor(tonumber((os.getenv("BUDGE_LL") or "524288"):match("^%d+")) / 1024)))
 if map ~= "" then
   local list = {}
   for _, entry in pairs(by_trace) do list[#list + 1] = entry end

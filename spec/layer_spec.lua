@@ -116,17 +116,19 @@ describe("budge.layer's axis scan", function()
   end)
 
   it("all three agree with the brute force next to 0 and on tile edges: coordinates that "
-    .. "underflow when divided by a side, sides whose multiples divide back below the count",
+    .. "underflow when divided by a side, sides whose multiples divide back below the count, "
+    .. "and 1 and an ulp below it, where an exact layer (origin 0, sides powers of two) "
+    .. "begins to skip the corrections,",
     function()
     local zero = 0.0 -- (-0 written as a literal is +0 on Lua 5.x: made at run time)
     local tiny = {0, -zero, 2 ^ -1074, -2 ^ -1074, 2 ^ -1060, -2 ^ -1060, 2 ^ -1020, -2 ^ -1020,
-      2 ^ -1000, 1, -1, 16, -16}
+      2 ^ -1000, 1, -1, 16, -16, 1 - 2 ^ -53, 2 ^ 50 + 0.5}
     local grid = {{1, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 0, 0, 1, 0, 0, 1}, {1, ONEWAY_ID, 1, 0, 0, 1, 0, 0},
       {0, 0, 0, 1, 0, 0, 0, 1}, {0, 1, 0, 0, 0, 0, 1, 0}, {0, 0, 0, 0, 1, 0, 0, 0},
       {1, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 1, 0, 0, 1, 0, 0}}
     local found, checked = 0, 0
     for _, side in ipairs({16, 2 ^ 40, 0.25, 0.7}) do -- (3 * 0.7 / 0.7 rounds below 3)
-      tiny[14], tiny[15] = 3 * side, 6 * side
+      tiny[16], tiny[17] = 3 * side, 6 * side
       for _, origin in ipairs({0, -side}) do
         local opts = {x = origin, y = origin, is_oneway = is_oneway}
         local tiles = layer.new(grid, side, side, opts, 1)
@@ -147,7 +149,7 @@ describe("budge.layer's axis scan", function()
         end
       end
     end
-    assert.are.equal(4 * 2 * 15 * 15 * 3 * 2 * 4, checked)
+    assert.are.equal(4 * 2 * 17 * 17 * 3 * 2 * 4, checked)
     assert.is_true(found > checked / 4 and found < checked * 3 / 4, "found " .. found)
   end)
 
