@@ -85,6 +85,26 @@ describe("a moved tile layer", function()
       assert.same({290, 5}, position(world, actor, 200, 0, method), method)
     end
   end)
+
+  it("is met where world:update saw it, from the origin and back to it, whatever its tiles "
+    .. "(a layer at the origin with power-of-two tiles skips the corrections for rounding)",
+    function()
+    for _, tile in ipairs({16, 10, 0.5}) do
+      for _, method in ipairs({"axis_sweep", "swept"}) do
+        local world = budge.new_world()
+        local layer = world:add_tiles({{1}, {1}}, tile, tile, {x = 300})
+        local actor = world:add_actor(box(200, 0.25, 0.25, 0.25))
+        local at = tile .. " " .. method
+        assert.same({299.75, 0.25}, position(world, actor, 200, 0, method), at)
+        layer.x = 0
+        world:update(layer)
+        assert.same({tile, 0.25}, position(world, actor, -600, 0, method), at)
+        layer.x, layer.y = 100.5, 0.125
+        world:update(layer)
+        assert.same({100.25, 0.25}, position(world, actor, 200, 0, method), at)
+      end
+    end
+  end)
 end)
 
 describe("a moving solid and an actor whose filter ignores it", function()

@@ -48,6 +48,16 @@ local EMPTY, SOLID, ONEWAY = tilegrid.EMPTY, tilegrid.SOLID, tilegrid.ONEWAY
 ---@field package _is_solid? fun(id: any): boolean
 ---@field package _is_oneway? fun(id: any): boolean
 
+-- True when `size` is 2^k, -64 <= k <= 64: v / size, v * (1 / size) and j * size are then
+-- exact for the coordinates a world allows, from 1 up (no rounding and no underflow).
+local function power_of_two(size)
+  for _ = 0, 64 do
+    if size == 1 then return true end
+    if size > 1 then size = size / 2 else size = size * 2 end
+  end
+  return false
+end
+
 -- The reach table: for each tile, the nearest line at or beyond it (toward +x, -x, +y,
 -- -y) that holds a solid tile in its row or column, as a 0-based column or row (cols or
 -- rows when there is none toward +x or +y, -1 toward -x or -y), the four side by side
@@ -95,16 +105,9 @@ local function build_reach(tiles)
     end
   end
   tiles._reach, tiles._down_any = reach, down_any
-end
-
--- True when `size` is 2^k, -64 <= k <= 64: v / size, v * (1 / size) and j * size are then
--- exact for the coordinates a world allows, from 1 up (no rounding and no underflow).
-local function power_of_two(size)
-  for _ = 0, 64 do
-    if size == 1 then return true end
-    if size > 1 then size = size / 2 else size = size * 2 end
-  end
-  return false
+  -- (here, so that world:update sees a layer the game moved: spec/hostile_spec.lua)
+  tiles._exact = tiles.x == 0 and tiles.y == 0 and power_of_two(tiles.tile_width)
+    and power_of_two(tiles.tile_height)
 end
 
 ---A tile layer read from the caller's grid; the options have been checked.
@@ -122,8 +125,6 @@ function layer.new(source, tile_width, tile_height, opts, level)
     _kinds = {}, _ids = {}, _inverse_width = 1 / tile_width, _inverse_height = 1 / tile_height,
     _width = opts.width, _is_solid = opts.is_solid, _is_oneway = opts.is_oneway,
   }
-  tiles._exact = tiles.x == 0 and tiles.y == 0 and power_of_two(tile_width)
-    and power_of_two(tile_height)
   read(source, data, cols, rows, tiles._is_solid, tiles._is_oneway, tiles._kinds, tiles._ids)
   build_reach(tiles)
   return tiles
