@@ -86,6 +86,20 @@ describe("a moved tile layer", function()
     end
   end)
 
+  it("moved without world:update, is met where it is on every interpreter (a review's "
+    .. "scene: a layer at the origin with power-of-two tiles once kept where it was, and "
+    .. "LuaJIT met half of each)", function()
+    local world = budge.new_world()
+    local layer = world:add_tiles({{1, 0, 0, 0, 0, 0, 0, 1, 0, 0}}, 16, 16)
+    local actor = world:add_actor(box(20, 4, 8, 8))
+    layer.x = 1000
+    local x, _, n, hits = world:move(actor, 2000, 0)
+    assert.same({992, 1, "right", 1}, {x, n, hits[1].side, hits[1].col})
+    actor.x = 1100
+    x, _, n = world:move(actor, -50, 0)
+    assert.same({1050, 0}, {x, n})
+  end)
+
   it("is met where world:update saw it, from the origin and back to it, whatever its tiles "
     .. "(a layer at the origin with power-of-two tiles skips the corrections for rounding)",
     function()

@@ -127,8 +127,10 @@ describe("budge.layer's axis scan", function()
       {0, 0, 0, 1, 0, 0, 0, 1}, {0, 1, 0, 0, 0, 0, 1, 0}, {0, 0, 0, 0, 1, 0, 0, 0},
       {1, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 1, 0, 0, 1, 0, 0}}
     local found, checked = 0, 0
-    for _, side in ipairs({16, 2 ^ 40, 0.25, 0.7}) do -- (3 * 0.7 / 0.7 rounds below 3)
-      tiny[16], tiny[17] = 3 * side, 6 * side
+    -- (3 * 0.7 / 0.7 rounds below 3; 10 and 12 are whole but not powers of two, where a
+    -- face an ulp past the box divides onto the tile beyond: a review's case, 30 - ulp)
+    for _, side in ipairs({16, 2 ^ 40, 0.25, 0.7, 10, 12}) do
+      tiny[16], tiny[17], tiny[18] = 3 * side, 6 * side, 3 * side * (1 - 2 ^ -53)
       for _, origin in ipairs({0, -side}) do
         local opts = {x = origin, y = origin, is_oneway = is_oneway}
         local tiles = layer.new(grid, side, side, opts, 1)
@@ -149,7 +151,7 @@ describe("budge.layer's axis scan", function()
         end
       end
     end
-    assert.are.equal(4 * 2 * 17 * 17 * 3 * 2 * 4, checked)
+    assert.are.equal(6 * 2 * 18 * 18 * 3 * 2 * 4, checked)
     assert.is_true(found > checked / 4 and found < checked * 3 / 4, "found " .. found)
   end)
 

@@ -36,21 +36,23 @@ local EMPTY, SOLID, ONEWAY = tilegrid.EMPTY, tilegrid.SOLID, tilegrid.ONEWAY
 ---@field package _spare_ids? any[]
 ---@field package _inverse_width number 1 / tile_width
 ---@field package _inverse_height number 1 / tile_height
----@field package _exact boolean its origin is (0, 0) and its tiles' sides are powers of two
----(2^-64 to 2^64): from a coordinate of at least 1, the tile it lies in is floor(v / side)
+---@field package _pow2 boolean its tiles' sides are powers of two (2^-64 to 2^64). With its
+---origin at (0, 0) as well (x and y read at each call: a layer the game moves is met where
+---it is, as before), from a coordinate of at least 1 the tile it lies in is floor(v / side)
 ---and its faces j * side, exactly, so tile_line and tile_stop skip the corrections for
----rounding there (most games' layers: the world bench's moves on LuaJIT ran 1198-1208
----machine instructions instead of 1299-1304 and 138 ns instead of 144 at 100 movers, 166
----instead of 177 at 10000; on Lua 5.4 22424 instead of 23674, `bench/instructions.lua
------way tiles`, and `bench/world.lua --way tiles`, 7 fresh runs each, interleaved,
----2026-12-07). spec/layer_spec.lua holds both to the brute force there too.
+---rounding there (most games' layers: the world bench's moves on LuaJIT ran 1218-1224
+---machine instructions instead of 1299-1304, and, with the origin read once, 138 ns
+---instead of 144 at 100 movers and 166 instead of 177 at 10000; on Lua 5.4 22424
+---instead of 23674: `bench/instructions.lua --way tiles` and `bench/world.lua --way
+---tiles`, 7 fresh runs each, interleaved, 2026-12-07). spec/layer_spec.lua holds both to
+---the brute force there, hostile_spec.lua to a layer the game moves.
 ---@field package _axis_x any[] what layer.tile_stop reads for a move along x, in one array:
----the origin, tile side, its inverse and the count of tiles along the axis, the step
----between them in the kinds (1), the same four across it, its step there, the columns
----and _exact (built with the reach table; on Lua 5.4 the world bench's tile moves ran
----20642 machine instructions instead of 21349 reading them here rather than from ten
----fields, 455 VM instructions instead of 471, `lua5.4 bench/instructions.lua --way tiles
------count 1000 --frames 5 --lua lua5.4`, 2026-12-07)
+---the tile side, its inverse, the count of tiles along the axis and the step between them
+---in the kinds (1), the same four across it, the columns and _pow2 (built with the reach
+---table; the origins are read at each call). On Lua 5.4 the world bench's tile moves ran
+---21249 machine instructions instead of 21349 reading them here rather than from eight
+---fields, 469 VM instructions instead of 471 (`lua5.4 bench/instructions.lua --way tiles
+-----count 1000 --frames 5 --lua lua5.4`, 2026-12-07).
 ---@field package _axis_y any[] the same for a move along y
 ---@field package _width? integer opts.width, for a flat grid
 ---@field package _is_solid? fun(id: any): boolean
@@ -113,18 +115,14 @@ local function build_reach(tiles)
     end
   end
   tiles._reach, tiles._down_any = reach, down_any
-  -- (here, so that world:update sees a layer the game moved: spec/hostile_spec.lua)
-  tiles._exact = tiles.x == 0 and tiles.y == 0 and power_of_two(tiles.tile_width)
-    and power_of_two(tiles.tile_height)
+  tiles._pow2 = power_of_two(tiles.tile_width) and power_of_two(tiles.tile_height)
   local ax, ay = tiles._axis_x or {}, tiles._axis_y or {}
-  ax[1], ax[2], ax[3], ax[4], ax[5] = tiles.x, tiles.tile_width, tiles._inverse_width, cols, 1
-  ax[6], ax[7], ax[8], ax[9], ax[10] = tiles.y, tiles.tile_height, tiles._inverse_height, rows,
-    cols
-  ax[11], ax[12] = cols, tiles._exact
-  ay[1], ay[2], ay[3], ay[4], ay[5] = tiles.y, tiles.tile_height, tiles._inverse_height, rows,
-    cols
-  ay[6], ay[7], ay[8], ay[9], ay[10] = tiles.x, tiles.tile_width, tiles._inverse_width, cols, 1
-  ay[11], ay[12] = cols, tiles._exact
+  ax[1], ax[2], ax[3], ax[4] = tiles.tile_width, tiles._inverse_width, cols, 1
+  ax[5], ax[6], ax[7], ax[8] = tiles.tile_height, tiles._inverse_height, rows, cols
+  ax[9], ax[10] = cols, tiles._pow2
+  ay[1], ay[2], ay[3], ay[4] = tiles.tile_height, tiles._inverse_height, rows, cols
+  ay[5], ay[6], ay[7], ay[8] = tiles.tile_width, tiles._inverse_width, cols, 1
+  ay[9], ay[10] = cols, tiles._pow2
   tiles._axis_x, tiles._axis_y = ax, ay
 end
 
@@ -367,7 +365,7 @@ end
 ---@return number face, integer hit, integer line, integer first, integer last
 function layer.tile_line(tiles, is_x, forward, pos, size, delta, cross, cross_end)
   local origin, tile, inverse, count, stride, cross_stride, first, last
-  local exact = tiles._exact
+  local exact = tiles._pow2 and tiles.x == 0 and tiles.y == 0
   if is_x then
     origin, tile, inverse, count, stride, cross_stride = tiles.x, tiles.tile_width,
       tiles._inverse_width, tiles.cols, 1, tiles.cols
@@ -376,7 +374,7 @@ function layer.tile_line(tiles, is_x, forward, pos, size, delta, cross, cross_en
       tiles._inverse_height, tiles.rows, tiles.cols, 1
   end
   local count_across = is_x and tiles.rows or tiles.cols
-  if exact and cross >= 1 then -- (span's corrections never apply: budge.TileLayer's _exact)
+  if exact and cross >= 1 then -- (span's corrections never apply: budge.TileLayer's _pow2)
     local inverse_side = is_x and tiles._inverse_height or tiles._inverse_width
     first, last = floor(cross * inverse_side), min(ceil(cross_end * inverse_side) - 1,
       count_across - 1)
@@ -573,14 +571,15 @@ end
 ---@return number? face, integer count
 function layer.tile_stop(tiles, is_x, forward, pos, size, delta, cross, cross_end, out_cols,
                          out_rows)
-  local axis = is_x and tiles._axis_x or tiles._axis_y
-  local origin, tile, inverse, count, stride = axis[1], axis[2], axis[3], axis[4], axis[5]
-  local low, side, inverse_side, count_across, cross_stride = axis[6], axis[7], axis[8],
-    axis[9], axis[10]
-  local cols, exact = axis[11], axis[12]
+  local axis, origin, low
+  if is_x then axis, origin, low = tiles._axis_x, tiles.x, tiles.y
+  else axis, origin, low = tiles._axis_y, tiles.y, tiles.x end
+  local tile, inverse, count, stride = axis[1], axis[2], axis[3], axis[4]
+  local side, inverse_side, count_across, cross_stride = axis[5], axis[6], axis[7], axis[8]
+  local cols, exact = axis[9], axis[10] and origin == 0 and low == 0
   -- the tiles across (span)
   local first, last
-  if exact and cross >= 1 then -- (budge.TileLayer's _exact: the corrections never apply)
+  if exact and cross >= 1 then -- (budge.TileLayer's _pow2: the corrections never apply)
     first, last = floor(cross * inverse_side), ceil(cross_end * inverse_side) - 1
   else
     first = floor((cross - low) * inverse_side)
