@@ -29,6 +29,7 @@ local abs, floor, min, max = math.abs, math.floor, math.min, math.max
 -- Lua 5.1-5.4 the ones with comparisons.
 local BRANCH_FREE = rawget(_G, "jit") ~= nil
 local stop_forward, stop_backward = sweep.stop_forward, sweep.stop_backward
+local power_of_two = sweep.power_of_two -- (see packed_end)
 
 local hash = {}
 
@@ -120,13 +121,6 @@ local BIG_CELLS = 4096
 -- Hash:axis_stop scans every record of a hash of at most this many instead of its cells.
 local SMALL = 8
 
--- True when `size` is a power of two (see packed_end).
-local function power_of_two(size)
-  if not (size > 0 and size < math.huge) then return false end -- (checked by the callers)
-  while size >= 2 do size = size / 2 end
-  while size < 1 do size = size * 2 end
-  return size == 1
-end
 
 ---A new, empty hash. With `packed`, the hash keeps beside its cells a packed copy of
 ---their records' boxes, as inserted, which Hash:axis_stop reads instead of the records:

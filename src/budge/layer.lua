@@ -46,26 +46,14 @@ local EMPTY, SOLID, ONEWAY = tilegrid.EMPTY, tilegrid.SOLID, tilegrid.ONEWAY
 ---instead of 23674: `bench/instructions.lua --way tiles` and `bench/world.lua --way
 ---tiles`, 7 fresh runs each, interleaved, 2026-12-07). spec/layer_spec.lua holds both to
 ---the brute force there, hostile_spec.lua to a layer the game moves.
----@field package _axis_x any[] what layer.tile_stop reads for a move along x, in one array:
----the tile side, its inverse, the count of tiles along the axis and the step between them
----in the kinds (1), the same four across it, the columns and _pow2 (built with the reach
----table; the origins are read at each call). On Lua 5.4 the world bench's tile moves ran
----21249 machine instructions instead of 21349 reading them here rather than from eight
----fields, 469 VM instructions instead of 471 (`lua5.4 bench/instructions.lua --way tiles
------count 1000 --frames 5 --lua lua5.4`, 2026-12-07).
----@field package _axis_y any[] the same for a move along y
 ---@field package _width? integer opts.width, for a flat grid
 ---@field package _is_solid? fun(id: any): boolean
 ---@field package _is_oneway? fun(id: any): boolean
 
 -- True when `size` is 2^k, -64 <= k <= 64: v / size, v * (1 / size) and j * size are then
 -- exact for the coordinates a world allows, from 1 up (no rounding and no underflow).
-local function power_of_two(size)
-  for _ = 0, 64 do
-    if size == 1 then return true end
-    if size > 1 then size = size / 2 else size = size * 2 end
-  end
-  return false
+local function exact_side(size)
+  return size >= 2 ^ -64 and size <= 2 ^ 64 and sweep.power_of_two(size)
 end
 
 -- The reach table: for each tile, the nearest line at or beyond it (toward +x, -x, +y,
@@ -115,15 +103,7 @@ local function build_reach(tiles)
     end
   end
   tiles._reach, tiles._down_any = reach, down_any
-  tiles._pow2 = power_of_two(tiles.tile_width) and power_of_two(tiles.tile_height)
-  local ax, ay = tiles._axis_x or {}, tiles._axis_y or {}
-  ax[1], ax[2], ax[3], ax[4] = tiles.tile_width, tiles._inverse_width, cols, 1
-  ax[5], ax[6], ax[7], ax[8] = tiles.tile_height, tiles._inverse_height, rows, cols
-  ax[9], ax[10] = cols, tiles._pow2
-  ay[1], ay[2], ay[3], ay[4] = tiles.tile_height, tiles._inverse_height, rows, cols
-  ay[5], ay[6], ay[7], ay[8] = tiles.tile_width, tiles._inverse_width, cols, 1
-  ay[9], ay[10] = cols, tiles._pow2
-  tiles._axis_x, tiles._axis_y = ax, ay
+  tiles._pow2 = exact_side(tiles.tile_width) and exact_side(tiles.tile_height)
 end
 
 ---A tile layer read from the caller's grid; the options have been checked.
@@ -571,12 +551,20 @@ end
 ---@return number? face, integer count
 function layer.tile_stop(tiles, is_x, forward, pos, size, delta, cross, cross_end, out_cols,
                          out_rows)
-  local axis, origin, low
-  if is_x then axis, origin, low = tiles._axis_x, tiles.x, tiles.y
-  else axis, origin, low = tiles._axis_y, tiles.y, tiles.x end
-  local tile, inverse, count, stride = axis[1], axis[2], axis[3], axis[4]
-  local side, inverse_side, count_across, cross_stride = axis[5], axis[6], axis[7], axis[8]
-  local cols, exact = axis[9], axis[10] and origin == 0 and low == 0
+  local cols = tiles.cols
+  local origin, tile, inverse, count, stride
+  local low, side, inverse_side, count_across, cross_stride
+  if is_x then
+    origin, tile, inverse, count, stride = tiles.x, tiles.tile_width, tiles._inverse_width, cols, 1
+    low, side, inverse_side, count_across, cross_stride = tiles.y, tiles.tile_height,
+      tiles._inverse_height, tiles.rows, cols
+  else
+    origin, tile, inverse, count, stride = tiles.y, tiles.tile_height, tiles._inverse_height,
+      tiles.rows, cols
+    low, side, inverse_side, count_across, cross_stride = tiles.x, tiles.tile_width,
+      tiles._inverse_width, cols, 1
+  end
+  local exact = tiles._pow2 and origin == 0 and low == 0
   -- the tiles across (span)
   local first, last
   if exact and cross >= 1 then -- (budge.TileLayer's _pow2: the corrections never apply)

@@ -118,8 +118,8 @@ end
 -- call, LuaJIT's tile moves took 173 ns instead of 154 (7 runs), make bench-jit's
 -- platformer 612 KB instead of 513 (5 runs), Lua 5.4's tile moves 1569 instead of 1509
 -- (`bench/world.lua --way tiles --count 1000`, fresh runs interleaved, 2026-12-02).
--- This form is for two layers or more (their hits carry sort keys); one layer takes
--- lean_stop below.
+-- This form is for two layers or more (their hits carry sort keys: hits.add_tiles writes
+-- them); one layer takes lean_stop below.
 local function layers_stop(world, is_x, pos, cross, cross_end, size, delta, done, path)
   local first_hit, forward = world._n_hits, delta > 0
   local layers, probe = world._layers, world._probe
@@ -137,26 +137,8 @@ local function layers_stop(world, is_x, pos, cross, cross_end, size, delta, done
         if stop ~= best then best = stop; world._n_hits = first_hit end
         local side
         if is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
-        local t = (done + (forward and stop - pos or pos - stop)) / path
-        local list, n = world._hits, world._n_hits
-        local nx, ny = NX[side], NY[side]
-        for c = 1, count do -- (hits.add written out: a call less per tile met)
-          local col, row = cols[c], rows[c]
-          local hit = list[n + c]
-          if hit == nil then
-            world._n_hits = n + c - 1
-            add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
-              tiles.x + (col - 1) * tiles.tile_width, world._records[tiles].id, SLIDE, t)
-          else
-            hit.other, hit.side, hit.col, hit.row, hit.response, hit.t = tiles, side, col, row,
-              SLIDE, t
-            hit.nx, hit.ny = nx, ny
-            hit._top, hit._left = tiles.y + (row - 1) * tiles.tile_height,
-              tiles.x + (col - 1) * tiles.tile_width
-            hit._id, hit._round = world._records[tiles].id, world._round
-          end
-        end
-        world._n_hits = n + count
+        add_tile_hits(world, tiles, side, cols, rows, count,
+          (done + (forward and stop - pos or pos - stop)) / path)
       end
     end
   end

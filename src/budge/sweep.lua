@@ -140,6 +140,18 @@ function sweep.clip_axis(start, delta, low, high, enter, leave, open)
   return enter, leave
 end
 
+---True when `size` is a power of two (2^k for some integer k): the hash's cells and the
+---tile layers whose divisions by their sides are exact (hash.lua's packed_end, layer.lua's
+---_pow2). False for 0, negative sizes, infinity and NaN.
+---@param size number
+---@return boolean
+function sweep.power_of_two(size)
+  if not (size > 0 and size < math.huge) then return false end
+  while size >= 2 do size = size / 2 end
+  while size < 1 do size = size * 2 end
+  return size == 1
+end
+
 ---The largest position p with p + size <= face: where a box of `size` stops with its
 ---leading edge on `face`. Equal to face - size whenever that is exact (integers, and
 ---halves, quarters... of them); otherwise a few ulps less, never an overlap. `low`, when
