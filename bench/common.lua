@@ -11,6 +11,18 @@ function common.median(values)
   return (sorted[middle] + sorted[middle + 1]) / 2
 end
 
+---The median of `values[r] / references[r]` over the rounds r: each run against the
+---reference run in the same round, so that drift between rounds cancels.
+---@param values number[]
+---@param references number[]
+---@return number
+function common.paired_ratio(values, references)
+  assert(#values == #references, "paired_ratio: as many values as references")
+  local ratios = {}
+  for r = 1, #values do ratios[r] = values[r] / references[r] end
+  return common.median(ratios)
+end
+
 ---The interpreter's name, e.g. "LuaJIT 2.1.0-beta3" or "Lua 5.4".
 function common.interpreter()
   local jit = rawget(_G, "jit")

@@ -19,12 +19,13 @@
 --              (BUMP_PATH=dir adds dir to package.path).
 -- Each way and run is its own fresh process (on LuaJIT what one way compiles changes
 -- another's figures, and a bare loop compiles two ways from run to run), the ways
--- interleaved; the medians of the runs are printed, with the ratios to the reference's
--- median. bump.lua runs at most 300000 moves a run (fewer frames at 10000 actors: it is
--- slow), the others F frames and at least 60000 moves (more frames at 100 actors). KB per
--- frame are allocated with the GC stopped, after a warm-up of 20 frames and at least
--- 50000 moves. The budge ways that move as the reference does (tiles, boxes, merged) must end
--- every actor where it does: the processes print a checksum of the final positions.
+-- interleaved round by round (counts too); the medians of the runs are printed, with the
+-- median of each round's ratio to the reference's run of that round. bump.lua runs at
+-- most 300000 moves a run (fewer frames at 10000 actors: it is slow), the others F frames
+-- and at least 60000 moves (more frames at 100 actors). KB per frame are allocated with
+-- the GC stopped, after a warm-up of 20 frames and at least 50000 moves. The budge ways
+-- that move as the reference does (tiles, boxes, merged) must end every actor where it
+-- does: the processes print a checksum of the final positions.
 -- --readme FILE writes the table into FILE between the markers for this interpreter.
 if ... ~= "bench.world" then -- run as a program; bench/run.lua requires it as a module
   package.path = "./src/?.lua;./src/?/init.lua;./?.lua;" .. package.path
@@ -244,8 +245,9 @@ local function say(line)
 end
 local date = os.date("!%Y-%m-%d")
 say(("`%s bench/world.lua --frames %d --runs %d`, %s, on %s, %s: ns per actor per frame, "
-  .. "median of %d fresh processes (the ways interleaved); ratio to the reference's median "
-  .. "in brackets; each run at least %d moves after a warm-up of %d%s."):format(
+  .. "median of %d fresh processes (ways and counts interleaved, one run of each a round); "
+  .. "in brackets the median of each round's ratio to that round's reference; each run at "
+  .. "least %d moves after a warm-up of %d%s."):format(
   interpreter, options.frames, options.runs, date,
   common.interpreter(), common.machine(), options.runs, MIN_MOVES, WARM_MOVES,
   has_bump and "; bump.lua at most 300000 moves a run" or "; bump.lua not found, skipped"))
@@ -257,26 +259,42 @@ for count in tostring(options.actors):gmatch("%d+") do
   header = header .. (" N = %s |"):format(count)
   rule = rule .. "---|"
 end
-local medians, memory = {}, {}
+-- Every (count, way) pair is a configuration of its own, and each round runs all of them
+-- once, counts and ways interleaved: the machine's drift over the half hour of a run
+-- falls on a way and the reference it is compared with alike, and on a way's 100 and
+-- 10000 actors alike. The ratios printed are the medians of each round's ratio (the way's
+-- run over the reference's run of that round), not ratios of the medians: on this shared
+-- machine the medians of one set of rounds drifted by 20-40% from the next with the code
+-- unchanged (2026-12-07), while each round's way and reference ran a few seconds apart.
+local configs = {}
 for _, count in ipairs(counts) do
-  local results = common.fresh_runs(ways, options.runs, 3, function(way)
-    return ("%s bench/world.lua --way %s --count %d --frames %d --seed %d"):format(
-      interpreter, way, count, options.frames, options.seed)
-  end)
+  for _, way in ipairs(ways) do configs[#configs + 1] = way .. "@" .. count end
+end
+local results = common.fresh_runs(configs, options.runs, 3, function(config)
+  local way, count = config:match("^(.-)@(%d+)$")
+  return ("%s bench/world.lua --way %s --count %d --frames %d --seed %d"):format(
+    interpreter, way, tonumber(count), options.frames, options.seed)
+end)
+local function runs_of(way, count) return results[way .. "@" .. count] end
+local medians, ratios, memory = {}, {}, {}
+for _, count in ipairs(counts) do
+  local reference = runs_of("reference", count)
   for _, way in ipairs({"tiles", "boxes", "merged"}) do
     for run_index = 1, options.runs do
-      if results[way][3][run_index] ~= results.reference[3][1] then
+      if runs_of(way, count)[3][run_index] ~= reference[3][1] then
         error(("%s ends the %d actors elsewhere than the reference (checksum %.17g, not %.17g)")
-          :format(way, count, results[way][3][run_index], results.reference[3][1]))
+          :format(way, count, runs_of(way, count)[3][run_index], reference[3][1]))
       end
     end
   end
   for _, way in ipairs(ways) do
-    medians[way] = medians[way] or {}
+    medians[way], ratios[way] = medians[way] or {}, ratios[way] or {}
     memory[way] = memory[way] or {}
-    medians[way][count] = common.median(results[way][1])
+    local runs = runs_of(way, count)
+    medians[way][count] = common.median(runs[1])
+    ratios[way][count] = common.paired_ratio(runs[1], reference[1])
     local worst = 0
-    for _, value in ipairs(results[way][2]) do worst = math.max(worst, value) end
+    for _, value in ipairs(runs[2]) do worst = math.max(worst, value) end
     memory[way][count] = worst
   end
 end
@@ -287,11 +305,34 @@ for _, way in ipairs(ways) do
   for _, count in ipairs(counts) do
     local ns = medians[way][count]
     if way == "reference" then row = row .. (" %.0f |"):format(ns)
-    else row = row .. (" %.0f (%.1fx) |"):format(ns, ns / medians.reference[count]) end
+    else row = row .. (" %.0f (%.2fx) |"):format(ns, ratios[way][count]) end
   end
   say(row)
 end
 say("")
+-- Per-mover cost from the fewest actors to the most, each round's run over its own
+-- (the issue's flatness), and the ratios of the medians beside the paired ones.
+local first, last = counts[1], counts[#counts]
+local flat, plain = {}, {}
+for _, way in ipairs(ways) do
+  if #counts > 1 then
+    flat[#flat + 1] = ("%s %.2f"):format(way,
+      common.paired_ratio(runs_of(way, last)[1], runs_of(way, first)[1]))
+  end
+  if way ~= "reference" then
+    local cells = {}
+    for _, count in ipairs(counts) do
+      cells[#cells + 1] = ("%.2f"):format(medians[way][count] / medians.reference[count])
+    end
+    plain[#plain + 1] = ("%s %s"):format(way, table.concat(cells, "/"))
+  end
+end
+if #counts > 1 then
+  say(("Per-mover cost at N = %d over N = %d (median of the rounds' ratios): %s.")
+    :format(last, first, table.concat(flat, ", ")))
+end
+say(("The ratios of the medians instead (N = %s): %s."):format(table.concat(counts, "/"),
+  table.concat(plain, ", ")))
 local kb = {}
 for _, way in ipairs(ways) do
   local worst = 0
