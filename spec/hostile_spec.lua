@@ -571,6 +571,35 @@ describe("the world's range", function()
       select(2, world:query_rect(-1e6, -1e6, 2e6, 2e6))})
   end)
 
+  it("refuses a tile side below the world's range over 2^61, whose tile indices could pass "
+    .. "Lua 5.3's least integer, and meets a layer of the least side from across the range",
+    function()
+    -- (a review's scene, 2026-12-07: 2^-64 px tiles and an actor 0.5 px above them; its
+    -- index -2^63 minus one wrapped round on Lua 5.3 and 5.4, and the move went through
+    -- the layer with no hit, where Lua 5.1 and LuaJIT stopped it on the floor)
+    local world = budge.new_world() -- (range 2^30 px)
+    local ok, err = pcall(function() world:add_tiles({{1}, {1}}, 1, 2 ^ -64) end)
+    assert.is_false(ok)
+    assert.equal("spec/hostile_spec.lua:" .. (debug.getinfo(1, "l").currentline - 2)
+      .. ": tile_height must be at least this world's range over 2^61, 4.6566128730774e-10 px "
+      .. "(a smaller tile's index can pass Lua 5.3's least integer), got 5.4210108624275e-20",
+      err)
+    assert.has_error(function() world:add_tiles({{1}}, 2 ^ -32, 1) end,
+      "tile_width must be at least this world's range over 2^61, 4.6566128730774e-10 px "
+      .. "(a smaller tile's index can pass Lua 5.3's least integer), got 2.3283064365387e-10")
+    assert.equal(0, world:count())
+    -- the least side, 2^24 * 2^-61 px in a world of 2^24 px, from the far end of it: the
+    -- actor's index from the layer is -2^61 (within 2^62 wherever both are in range)
+    local small = budge.new_world({cell_size = 1})
+    local tiles = small:add_tiles({{1}, {1}}, 2 ^ -37, 2 ^ -37)
+    local actor = small:add_actor(box(2 ^ -39, -2 ^ 24, 2 ^ -38, 0))
+    local x, y, n, hits = small:move(actor, 0, 2 ^ 24 + 1)
+    assert.same({2 ^ -39, 0, 1, "floor", 1, 1, tiles}, {x, y, n, hits[1].side, hits[1].col,
+      hits[1].row, hits[1].other})
+    x, y, n = small:move(actor, 0, -2 ^ 24)
+    assert.same({2 ^ -39, -2 ^ 24, 0}, {x, y, n})
+  end)
+
   it("refuses to move or check an actor, or move a solid, the game put beyond it without "
     .. "world:update, naming actor.x or actor.y (solid.x)", function()
     -- (only the move's end was checked: from 2^62 px back by as much, a move ended inside

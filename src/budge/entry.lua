@@ -200,6 +200,24 @@ function entry.check_layer_span(self, origin, count, size, origin_name, size_nam
   end
 end
 
+---Errors (at the caller of the entry) when a tile side is below the world's range over
+---2^61. Two coordinates in range are at most twice the range apart, so a coordinate's
+---tile index from a layer's origin stays within 2^62 either way; with a smaller side it
+---can reach -2^63, which Lua 5.3 and 5.4 round to their least integer, and one less than
+---that wraps round to the greatest: a move went through the layer with no hit there, as
+---a review found (a 2^-64 px tile, an actor 0.5 px above it, 2026-12-07).
+---@param self budge.World
+---@param side number a tile_width or tile_height that check_options has passed
+---@param name string
+function entry.check_tile_side(self, side, name)
+  local least = self.range * 2 ^ -61
+  if side < least then
+    error(format("%s must be at least this world's range over 2^61, %s px (a smaller tile's "
+      .. "index can pass Lua 5.3's least integer), got %s", name, describe(least),
+      describe(side)), 3)
+  end
+end
+
 ---A caller's output table, or a new one; errors (at the caller of the entry) for others.
 ---@param out any
 ---@param name string

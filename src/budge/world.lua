@@ -41,6 +41,7 @@ local find_record, refuse_duplicate, abandon_move = entry.find_record, entry.ref
   entry.abandon_move
 local check_self, check_box_span = entry.check_self, entry.check_box_span
 local check_delta_span, check_layer_span = entry.check_delta_span, entry.check_layer_span
+local check_tile_side = entry.check_tile_side
 
 -- The range within which every operation is exact, terminates and does bounded work:
 -- coordinates (x, y, x + width, y + height) within 2^24 cells of the origin either way,
@@ -290,6 +291,7 @@ end
 ---and one for which `opts.is_oneway(id)` is true is a oneway platform. Tile (col, row)
 ---covers x + (col-1)*tile_width onward. The grid is read now; call world:update(handle)
 ---after changing it. 0 is empty by default because Tiled and most tile maps use it so.
+---Tile sides are at least the world's range over 2^61 (2^-31 px at the default cell size).
 ---@param grid table grid[row][col], a flat array with opts.width, or a Tiled layer
 ---@param tile_width number
 ---@param tile_height number
@@ -301,6 +303,8 @@ function World:add_tiles(grid, tile_width, tile_height, opts)
     error(format("grid must be a table of rows (grid[row][col]), got %s", describe(grid)), 2)
   end
   opts = tilegrid.check_options(tile_width, tile_height, opts, 2)
+  check_tile_side(self, tile_width, "tile_width")
+  check_tile_side(self, tile_height, "tile_height")
   local tiles = layer.new(grid, tile_width, tile_height, opts, 2)
   check_layer_span(self, tiles.x, tiles.cols, tile_width, "opts.x", "tile_width", "columns")
   check_layer_span(self, tiles.y, tiles.rows, tile_height, "opts.y", "tile_height", "rows")
