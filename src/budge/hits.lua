@@ -173,13 +173,15 @@ end
 ---@param world budge.World
 ---@param tiles budge.TileLayer
 ---@param side "floor"|"ceiling"|"left"|"right"
+---@param nx number NX[side]
+---@param ny number NY[side]
 ---@param is_x boolean
 ---@param line integer
 ---@param across integer
 ---@param last integer
 ---@param count integer 1 or 2
 ---@param t number
-function hits.add_line_pair(world, tiles, side, is_x, line, across, last, count, t)
+function hits.add_line_pair(world, tiles, side, nx, ny, is_x, line, across, last, count, t)
   local n = world._n_hits
   local list = world._hits
   local col, row, last_col, last_row = across + 1, line + 1, last + 1, line + 1
@@ -194,7 +196,6 @@ function hits.add_line_pair(world, tiles, side, is_x, line, across, last, count,
     end
     return
   end
-  local nx, ny = NX[side], NY[side]
   local hit = list[n + 1]
   hit.other, hit.side, hit.col, hit.row, hit.response, hit.t = tiles, side, col, row, SLIDE, t
   hit.nx, hit.ny = nx, ny

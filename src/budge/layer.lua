@@ -342,7 +342,11 @@ end
 ---@param delta number
 ---@param cross number
 ---@param cross_end number
----@return number face, integer hit, integer line, integer first, integer last
+---The last two values are the reach values it read at `first` and `last` across: when
+---the line comes from the reach table alone (no oneway tiles in a move down), a tile
+---there is on the line exactly when its value is the line, so layer.pair lists the line
+---from them without reading the table again.
+---@return number face, integer hit, integer line, integer first, integer last, integer reach_first, integer reach_last
 function layer.tile_line(tiles, is_x, forward, pos, size, delta, cross, cross_end)
   local origin, tile, inverse, count, stride, cross_stride, first, last
   local exact = tiles._pow2 and tiles.x == 0 and tiles.y == 0
@@ -370,7 +374,7 @@ function layer.tile_line(tiles, is_x, forward, pos, size, delta, cross, cross_en
   last = max(last, first)
   local edge = pos + size
   local reach = tiles._reach
-  local line, face
+  local line, face, reach_first, reach_last
   if forward then
     -- the first line whose low face is past pos (a box of size 0: at or past it)
     local j
@@ -391,7 +395,8 @@ function layer.tile_line(tiles, is_x, forward, pos, size, delta, cross, cross_en
     j = min(j, count - 1)
     local at, step = (j * stride + first * cross_stride) * 4 + (is_x and RIGHT or DOWN),
       cross_stride * 4
-    line = min(reach[at], reach[at + (last - first) * step])
+    reach_first, reach_last = reach[at], reach[at + (last - first) * step]
+    line = min(reach_first, reach_last)
     for i = 1, last - first - 1 do line = min(line, reach[at + i * step]) end
     local down_any = tiles._down_any
     if not is_x and down_any then -- oneway tiles, from the first row at or below the box
@@ -428,14 +433,15 @@ function layer.tile_line(tiles, is_x, forward, pos, size, delta, cross, cross_en
     j = max(j, 0)
     local at, step = (j * stride + first * cross_stride) * 4 + (is_x and LEFT or UP),
       cross_stride * 4
-    line = max(reach[at], reach[at + (last - first) * step])
+    reach_first, reach_last = reach[at], reach[at + (last - first) * step]
+    line = max(reach_first, reach_last)
     for i = 1, last - first - 1 do line = max(line, reach[at + i * step]) end
     hit = hit * min(max(line + 1, 0), 1)
     line = max(line, 0)
     face = origin + (line + 1) * tile
     hit = hit * ceil(min(max(face - (pos + delta), 0), 1))
   end
-  return face, hit, line, first, last
+  return face, hit, line, first, last, reach_first, reach_last
 end
 
 -- Where line `line`'s tiles are in the reach tables, for a move on the axis (is_x) and
@@ -451,16 +457,23 @@ local function line_base(tiles, is_x, forward, line, face, edge)
 end
 
 -- Of a box one or two tiles across (first and last, 0-based, last - first <= 1), which
--- are on line `line` (whose reach is that line): the first of them (0-based across) and
--- how many (1 or 2; the second, when 2, is `last`). Without a branch (on LuaJIT each is
--- a side trace to compile): `missed` is 1 for a tile whose reach is not the line (reach
--- and line are whole numbers), and for a box one tile across the "second" is the first
--- again, not counted.
-local function line_pair(reach, base, step, line, first, last)
-  local missed_first = min(abs(reach[base + first * step] - line), 1)
-  local missed_last = min(abs(reach[base + last * step] - line), 1)
+-- are on line `line`, from their reach values (a tile is on the line when its value is
+-- the line): the first of them (0-based across) and how many (1 or 2; the second, when 2,
+-- is `last`). Without a branch (on LuaJIT each is a side trace to compile): `missed` is 1
+-- for a tile whose reach is not the line (reach and line are whole numbers), and for a
+-- box one tile across the "second" is the first again, not counted.
+local function pair(line, first, last, reach_first, reach_last)
+  local missed_first = min(abs(reach_first - line), 1)
+  local missed_last = min(abs(reach_last - line), 1)
   return first + missed_first * (last - first),
     1 - missed_first + min(last - first, 1) * (1 - missed_last)
+end
+
+layer.pair = pair
+
+-- pair's answer from the reach table `reach` (line_base's table, base and step).
+local function line_pair(reach, base, step, line, first, last)
+  return pair(line, first, last, reach[base + first * step], reach[base + last * step])
 end
 
 -- Lists the tiles on line `line` that stop the box (those whose reach is that line: the

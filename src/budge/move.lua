@@ -31,7 +31,8 @@ local entry_axis, sweep_ends = sweep.entry_axis, sweep.ends
 local NORMAL_X, NORMAL_Y = sweep.NORMAL_X, sweep.NORMAL_Y
 local tile_face, tile_face_scan, tile_stop = layer.tile_face, layer.tile_face_scan,
   layer.tile_stop
-local tile_line, list_line, line_pair = layer.tile_line, layer.list_line, layer.line_pair
+local tile_line, list_line, line_pair, pair = layer.tile_line, layer.list_line,
+  layer.line_pair, layer.pair
 local gather, clip_to_boxes, clip_to_bounds = solids.gather, solids.clip_to_boxes,
   solids.clip_to_bounds
 local gather_sensors, gather_all = solids.gather_sensors, solids.gather_all
@@ -77,6 +78,15 @@ local move = {}
 -- fail on lua5.4 when written that way).
 local SIDES_X = {[true] = "right", [false] = "left"}
 local SIDES_Y = {[true] = "floor", [false] = "ceiling"}
+
+-- The side a phase's contacts are on, from its axis and way, where LuaJIT is the caller:
+-- in a trace is_x and forward are known, so this is a constant, and so are hits.add's
+-- NX[side] and NY[side] after it (from SIDES_X[forward], a string read from a table,
+-- each was a hash lookup). (Lua 5.x's tile paths keep the tables: a call costs more.)
+local function side_of(is_x, forward)
+  if is_x then return forward and "right" or "left" end
+  return forward and "floor" or "ceiling"
+end
 
 -- The hash part of an axis phase: the swept rectangle, clipped to the bounds of the
 -- hashed solids, scanned with the probe.
@@ -196,10 +206,10 @@ end
 local function lean_phase(world, is_x, pos, cross, size, cross_size, delta, done, path)
   local tiles = world._layers[1]
   local forward = delta > 0
-  local face, hit, line, first, last = tile_line(tiles, is_x, forward, pos, size, delta,
-    cross, cross + cross_size)
+  local face, hit, line, first, last, reach_first, reach_last = tile_line(tiles, is_x,
+    forward, pos, size, delta, cross, cross + cross_size)
   if hit == 0 then return pos + delta end
-  local stop, t, side = face -- (the outcomes sweep.stop_forward / stop_backward give)
+  local stop, t = face -- (the outcomes sweep.stop_forward / stop_backward give)
   if forward then
     if face >= pos + size then stop = before(face, size, pos) else stop = pos end
     t = (done + (stop - pos)) / path
@@ -207,7 +217,13 @@ local function lean_phase(world, is_x, pos, cross, size, cross_size, delta, done
     if face > pos then stop = pos end
     t = (done + (pos - stop)) / path
   end
-  if is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
+  -- (the side and its normal, hits.NX and NY, as constants: in a trace is_x and forward
+  -- are known, where NX[side] was a hash lookup of a string read from a table)
+  local side, nx, ny
+  if is_x then
+    if forward then side, nx, ny = "right", -1, 0 else side, nx, ny = "left", 1, 0 end
+  elseif forward then side, nx, ny = "floor", 0, -1
+  else side, nx, ny = "ceiling", 0, 1 end
   if last - first > 1 then -- (a box more than two tiles across: list them)
     local probe = world._probe
     probe.is_x, probe.forward, probe.blocks_oneway, probe.edge = is_x, forward,
@@ -215,8 +231,11 @@ local function lean_phase(world, is_x, pos, cross, size, cross_size, delta, done
     local count = list_line(tiles, probe, line, first, last, face)
     add_tile_hits(world, tiles, side, probe.cols, probe.rows, count, t)
   else
-    local across, count = line_pair(tiles, is_x, forward, line, first, last, face, pos + size)
-    add_line_pair(world, tiles, side, is_x, line, across, last, count, t)
+    local across, count
+    if forward and not is_x and tiles._down_any then -- (oneway tiles: line_pair's reads)
+      across, count = line_pair(tiles, is_x, forward, line, first, last, face, pos + size)
+    else across, count = pair(line, first, last, reach_first, reach_last) end
+    add_line_pair(world, tiles, side, nx, ny, is_x, line, across, last, count, t)
   end
   return stop
 end
@@ -262,8 +281,7 @@ local function phase_stop(world, probe)
         elseif face > pos then stop = pos end
         if best == nil or (forward and stop <= best) or (not forward and stop >= best) then
           if stop ~= best then best = stop; world._n_hits = first_hit; probe.sources = 0 end
-          local side
-          if probe.is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
+          local side = side_of(probe.is_x, forward)
           local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
           add_tile_hits(world, tiles, side, probe.cols, probe.rows, count, t)
           probe.sources = probe.sources + 1
@@ -278,8 +296,7 @@ local function phase_stop(world, probe)
     local forward = probe.forward
     if stop and (best == nil or (forward and stop <= best) or (not forward and stop >= best)) then
       if stop ~= best then best = stop; world._n_hits = first_hit; probe.sources = 0 end
-      local side
-      if probe.is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
+      local side = side_of(probe.is_x, forward)
       local touch, pos = probe.touch, probe.pos
       local t = (probe.before + (forward and stop - pos or pos - stop)) / probe.path
       for c = 1, probe.touched do -- (the solids' items and ids: their records are not read)
