@@ -73,20 +73,19 @@ local move = {}
 
 -- axis_sweep -------------------------------------------------------------------------
 
--- Lua 5.4 quirk: indexed only by a boolean local, because Lua 5.4.4 miscompiles T[a > b]
--- when T is an upvalue (the wrong side came back; spec/world_spec.lua's contact sides
--- fail on lua5.4 when written that way).
-local SIDES_X = {[true] = "right", [false] = "left"}
-local SIDES_Y = {[true] = "floor", [false] = "ceiling"}
-
--- The side a phase's contacts are on, from its axis and way, where LuaJIT is the caller:
--- in a trace is_x and forward are known, so this is a constant, and so are hits.add's
--- NX[side] and NY[side] after it (from SIDES_X[forward], a string read from a table,
--- each was a hash lookup). (Lua 5.x's tile paths keep the tables: a call costs more.)
+-- The side a phase's contacts are on, from its axis and way. Where LuaJIT is the caller
+-- (phase_stop): in a trace is_x and forward are known, so this is a constant, and so are
+-- hits.add's NX[side] and NY[side] (from SIDES_X[forward], a string read from a table,
+-- each was a hash lookup). Lua 5.x's tile paths read the tables below: a call costs more.
 local function side_of(is_x, forward)
   if is_x then return forward and "right" or "left" end
   return forward and "floor" or "ceiling"
 end
+-- Lua 5.4 quirk: indexed only by a boolean local, because Lua 5.4.4 miscompiles T[a > b]
+-- when T is an upvalue (the wrong side came back; spec/world_spec.lua's contact sides
+-- fail on lua5.4 when written that way).
+local SIDES_X = {[true] = side_of(true, true), [false] = side_of(true, false)}
+local SIDES_Y = {[true] = side_of(false, true), [false] = side_of(false, false)}
 
 -- The hash part of an axis phase: the swept rectangle, clipped to the bounds of the
 -- hashed solids, scanned with the probe.
@@ -217,8 +216,10 @@ local function lean_phase(world, is_x, pos, cross, size, cross_size, delta, done
     if face > pos then stop = pos end
     t = (done + (pos - stop)) / path
   end
-  -- (the side and its normal, hits.NX and NY, as constants: in a trace is_x and forward
-  -- are known, where NX[side] was a hash lookup of a string read from a table)
+  -- (the side and its normal, hits.NX and NY, written out: in a trace is_x and forward
+  -- are known and these are constants. Through side_of and NX[side] the same moves ran
+  -- 1282-1761 machine instructions instead of 1217-1234, `luajit bench/instructions.lua
+  -- --way tiles --count 100`, 2026-12-07; world_spec's normals test holds them to NX.)
   local side, nx, ny
   if is_x then
     if forward then side, nx, ny = "right", -1, 0 else side, nx, ny = "left", 1, 0 end
