@@ -121,7 +121,6 @@ local BIG_CELLS = 4096
 -- Hash:axis_stop scans every record of a hash of at most this many instead of its cells.
 local SMALL = 8
 
-
 ---A new, empty hash. With `packed`, the hash keeps beside its cells a packed copy of
 ---their records' boxes, as inserted, which Hash:axis_stop reads instead of the records:
 ---the world's solids (world.lua), whose boxes change only by a remove and an insert, and
