@@ -1,8 +1,8 @@
 -- budge.layer's axis scans (tile_face, read from the reach tables by tile_line and
 -- list_line, as LuaJIT's moves in a world of one layer read them; tile_face_scan, the line
 -- scan a world with hashed solids uses on LuaJIT; and tile_stop, Lua 5.x's form of
--- tile_face) against a brute force over every tile of the layer, and the reach tables
--- kept up to date by world:update.
+-- tile_face, with the hits it writes) against a brute force over every tile of the layer,
+-- and the reach tables kept up to date by world:update.
 local layer = require("budge.layer")
 local sweep = require("budge.sweep")
 local random_source = require("fixtures.random")
@@ -58,16 +58,50 @@ local function probe_for(is_x, forward, pos, size, delta, cross, cross_size)
   return p
 end
 
+local SIDES = {[true] = {[true] = "right -1 0", [false] = "left 1 0"},
+  [false] = {[true] = "floor 0 -1", [false] = "ceiling 0 1"}}
+
+-- tile_stop's answer for probe p as tile_face's (face, count, p.cols and p.rows), from the
+-- hits it writes into a world of its own (after 2 hits already there, whose records it
+-- reuses, and beyond them new ones), its stop checked against the axis rules' (sweep's)
+-- for that face and each hit's side, normal, time and response.
+local function tile_stop_answer(tiles, p, case)
+  local old = {other = false, side = "left", col = 0, row = 0, response = "touch", t = 1,
+    nx = 9, ny = 9}
+  local world = {_hits = {{}, {}, old}, _n_hits = 2, _records = {[tiles] = {id = 7}},
+    _round = 1}
+  local path = 2 * math.abs(p.delta) -- (done: half of it, before this phase)
+  local stop, face = layer.tile_stop(world, tiles, p.is_x, p.pos, p.cross, p.cross_end,
+    p.size, p.delta, path / 2, path)
+  local where = ", case " .. case
+  if stop == nil then
+    assert.are.equal(2, world._n_hits, "tile_stop" .. where)
+    return nil, 0
+  end
+  local want = p.forward and sweep.stop_forward(face, p.pos, p.edge, p.reach, p.size, false,
+    true) or sweep.stop_backward(face, p.pos, p.edge, p.reach, false, true)
+  assert.are.equal(want, stop, "tile_stop's stop" .. where)
+  local count = world._n_hits - 2
+  local t = (path / 2 + math.abs(stop - p.pos)) / path
+  for i = 1, count do
+    local hit = world._hits[2 + i]
+    p.cols[i], p.rows[i] = hit.col, hit.row
+    assert.are.same({tiles, SIDES[p.is_x][p.forward], "slide", t},
+      {hit.other, ("%s %d %d"):format(hit.side, hit.nx, hit.ny), hit.response, hit.t},
+      "tile_stop's hit " .. i .. where)
+  end
+  return face, count
+end
+
 -- The three scans' answers for probe p, each against the brute force's; returns the face.
 local function compare(grid, cols, rows, opts, tile_w, tile_h, tiles, p, case)
   local want, list = brute(grid, cols, rows, opts, tile_w, tile_h, p)
   local face
   for _, scan in ipairs({"tile_face", "tile_face_scan", "tile_stop"}) do
     local count
-    if scan == "tile_stop" then -- (from the probe's inputs; its own output lists)
+    if scan == "tile_stop" then -- (from the probe's inputs, into its own lists)
       p.cols, p.rows = {}, {}
-      face, count = layer.tile_stop(tiles, p.is_x, p.forward, p.pos, p.size, p.delta,
-        p.cross, p.cross_end, p.cols, p.rows)
+      face, count = tile_stop_answer(tiles, p, case)
     else
       face, count = layer[scan](tiles, p)
     end

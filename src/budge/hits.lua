@@ -162,6 +162,36 @@ function hits.add_tiles(world, tiles, side, cols, rows, count, t)
   world._n_hits = n + count
 end
 
+---Moves the hits after index `from` down to follow index `first` (first <= from): those
+---between are dropped (their records go past the new end, for later moves to reuse).
+---@param world budge.World
+---@param first integer
+---@param from integer
+function hits.shift(world, first, from)
+  local list, n = world._hits, world._n_hits
+  if from == first then return end
+  for i = from + 1, n do -- (i's record is never one moved there: first + i - from < i)
+    local to = first + i - from
+    list[to], list[i] = list[i], list[to]
+  end
+  world._n_hits = n - (from - first)
+end
+
+---Writes the sort keys (hits.add's) of the hits from index `first` on, all of them
+---tiles (layer.tile_stop writes its hits without them).
+---@param world budge.World
+---@param first integer
+function hits.key_tiles(world, first)
+  local list, records, round = world._hits, world._records, world._round
+  for i = first, world._n_hits do
+    local hit = list[i]
+    local tiles, col, row = hit.other, hit.col, hit.row
+    hit._top, hit._left = tiles.y + (row - 1) * tiles.tile_height,
+      tiles.x + (col - 1) * tiles.tile_width
+    hit._id, hit._round = records[tiles].id, round
+  end
+end
+
 ---Appends one or two tiles of `tiles` on one line as "slide" contacts on `side` at time
 ---t: tile `across` (0-based across the axis: its row when is_x, else its column) and,
 ---when count is 2, tile `last`, both on line `line` (0-based along the axis). For a move

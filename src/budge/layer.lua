@@ -8,11 +8,13 @@
 local here = (...):match("^(.*)%.[^%.]+$")
 local sweep = require(here .. ".sweep")
 local tilegrid = require(here .. ".tilegrid")
+local hits = require(here .. ".hits")
 
 local floor, ceil, min, max, abs, HUGE = math.floor, math.ceil, math.min, math.max,
   math.abs, math.huge
 local format, error = string.format, error
-local clip_axis, segment_enter = sweep.clip_axis, sweep.segment_enter
+local clip_axis, segment_enter, before = sweep.clip_axis, sweep.segment_enter, sweep.before
+local add_hit, SLIDE = hits.add, hits.SLIDE
 local measure, read = tilegrid.measure, tilegrid.read
 
 local layer = {}
@@ -541,29 +543,42 @@ function layer.tile_face(tiles, probe)
   return face, list_line(tiles, probe, line, first, last, face)
 end
 
----layer.tile_face's answer on Lua 5.1-5.4, from its inputs rather than a probe: the box
----at `pos` (of `size`) on the axis moving by `delta` (`forward`: delta > 0), from `cross`
----to `cross_end` across it; the tiles on the face into out_cols and out_rows.
+---Lua 5.1-5.4's axis phase against one tile layer: layer.tile_face's answer, from the
+---move's values rather than a probe, with the tiles written straight into the world's
+---hits. The box at `pos` (of `size`) on the axis moving by `delta`, from `cross` to
+---`cross_end` across it, `done` px into a move of `path` px: the tiles on the nearest face
+---that stops it are appended to world's hits as "slide" contacts at the stop's time, in
+---order across, without the sort keys (hits.key_tiles writes them where hits from several
+---layers are sorted: move.lua's layers_stop). Returns where the box stops and the face,
+---or nil when no tile of `tiles` (nil: none) stops it.
 ---Speed: the same arithmetic and reads as tile_line and list_line, with span and
 ---list_line written out and comparisons for min and max (on Lua 5.x a call, even to
 ---math.min, costs more than a branch). `lua5.4 bench/world.lua --way tiles
 -----count 1000 --frames 60`, 3 fresh runs each, interleaved, 2026-12-02, with move.lua's
 ---layers_stop: 2196-2323 ns per move through tile_face and phase_stop, 1740-1750 through
----this. On LuaJIT its loops cost more than the calls (the same move took 786 ns against
----152): LuaJIT keeps tile_line. spec/layer_spec.lua holds them to a brute force.
----@param tiles budge.TileLayer
+---this. The hits written here, not listed into the probe's arrays for move.lua to write
+---(a call and a round trip through two arrays less per phase): the world bench's tile
+---moves at 100 movers ran 20760 machine instructions a move instead of 23614, 19121
+---instead of 21510 at 1000 (`lua5.4 bench/instructions.lua --way tiles --count N --lua
+---lua5.4`), and 1755 ns instead of 2113 at 100 movers (`lua5.4 bench/world.lua --way
+---tiles --count 100 --frames 60`, 11 fresh runs each, interleaved with the reference,
+---medians, 2026-12-07).
+---On LuaJIT its loops cost more than the calls (the same move took 786 ns against 152):
+---LuaJIT keeps tile_line. spec/layer_spec.lua holds it to a brute force.
+---@param world budge.World
+---@param tiles budge.TileLayer?
 ---@param is_x boolean
----@param forward boolean
 ---@param pos number
----@param size number
----@param delta number
 ---@param cross number
 ---@param cross_end number
----@param out_cols integer[]
----@param out_rows integer[]
----@return number? face, integer count
-function layer.tile_stop(tiles, is_x, forward, pos, size, delta, cross, cross_end, out_cols,
-                         out_rows)
+---@param size number
+---@param delta number
+---@param done number
+---@param path number
+---@return number? stop, number face
+function layer.tile_stop(world, tiles, is_x, pos, cross, cross_end, size, delta, done, path)
+  if tiles == nil then return nil end
+  local forward = delta > 0
   local cols = tiles.cols
   local origin, tile, inverse, count, stride
   local low, side, inverse_side, count_across, cross_stride
@@ -592,11 +607,11 @@ function layer.tile_stop(tiles, is_x, forward, pos, size, delta, cross, cross_en
   end
   if first < 0 then first = 0 end
   if last > count_across - 1 then last = count_across - 1 end
-  if first > last then return nil, 0 end
+  if first > last then return nil end
   local edge = pos + size
   local strict = pos < edge
   local reach, down_any = tiles._reach, tiles._down_any
-  local line, face, base
+  local line, face, base, along -- (along: the step between the line's tiles in `reach`)
   if forward then
     local j, near
     if exact and pos >= 1 then -- (ahead)
@@ -611,7 +626,7 @@ function layer.tile_stop(tiles, is_x, forward, pos, size, delta, cross, cross_en
         if near > pos or (not strict and near == pos) then j = j - 1 end
       end
     end
-    if j < 0 then j = 0 elseif j >= count then return nil, 0 end
+    if j < 0 then j = 0 elseif j >= count then return nil end
     local at, step = (j * stride + first * cross_stride) * 4 + (is_x and RIGHT or DOWN),
       cross_stride * 4
     line = reach[at] -- (nearest_line)
@@ -633,21 +648,13 @@ function layer.tile_stop(tiles, is_x, forward, pos, size, delta, cross, cross_en
         end
       end
     end
-    if line >= count then return nil, 0 end
+    if line >= count then return nil end
     face = origin + line * tile
-    if face >= pos + delta + size then return nil, 0 end -- (the far side where it ends)
-    if is_x then base = line * 4 + RIGHT
+    if face >= pos + delta + size then return nil end -- (the far side where it ends)
+    if is_x then base, along = line * 4 + RIGHT, cols * 4
     elseif down_any and face >= edge then -- (list_line: the oneway table's tiles)
-      local found = 0
-      base = line * cols + 1
-      for i = first, last do
-        if down_any[base + i] == line then
-          found = found + 1
-          out_cols[found], out_rows[found] = i + 1, line + 1
-        end
-      end
-      return face, found
-    else base = line * cols * 4 + DOWN end
+      reach, base, along = down_any, line * cols + 1, 1
+    else base, along = line * cols * 4 + DOWN, 4 end
   else
     local j
     if exact and edge >= 1 then -- (behind)
@@ -663,7 +670,7 @@ function layer.tile_stop(tiles, is_x, forward, pos, size, delta, cross, cross_en
       end
     end
     if j > count - 1 then j = count - 1 end
-    if j < 0 then return nil, 0 end
+    if j < 0 then return nil end
     local at, step = (j * stride + first * cross_stride) * 4 + (is_x and LEFT or UP),
       cross_stride * 4
     line = reach[at]
@@ -671,21 +678,41 @@ function layer.tile_stop(tiles, is_x, forward, pos, size, delta, cross, cross_en
       local next_line = reach[at + i * step]
       if next_line > line then line = next_line end
     end
-    if line < 0 then return nil, 0 end
+    if line < 0 then return nil end
     face = origin + (line + 1) * tile
-    if face <= pos + delta then return nil, 0 end
-    if is_x then base = line * 4 + LEFT else base = line * cols * 4 + UP end
+    if face <= pos + delta then return nil end
+    if is_x then base, along = line * 4 + LEFT, cols * 4
+    else base, along = line * cols * 4 + UP, 4 end
   end
-  local step = is_x and cols * 4 or 4 -- (list_line)
-  local found = 0
+  local stop = face
+  if forward then stop = face >= edge and before(face, size, pos) or pos
+  elseif face > pos then stop = pos end
+  local t = (done + (forward and stop - pos or pos - stop)) / path
+  local met, nx, ny -- (the side met; hits.NX's and hits.NY's: world_spec holds them there)
+  if is_x then
+    if forward then met, nx, ny = "right", -1, 0 else met, nx, ny = "left", 1, 0 end
+  elseif forward then met, nx, ny = "floor", 0, -1
+  else met, nx, ny = "ceiling", 0, 1 end
+  local list, n = world._hits, world._n_hits
   for i = first, last do
-    if reach[base + i * step] == line then
-      found = found + 1
-      if is_x then out_cols[found], out_rows[found] = line + 1, i + 1
-      else out_cols[found], out_rows[found] = i + 1, line + 1 end
+    if reach[base + i * along] == line then -- (list_line)
+      n = n + 1
+      local col, row = i + 1, line + 1
+      if is_x then col, row = row, col end
+      local hit = list[n]
+      if hit == nil then -- (a new record: hits.add writes every field)
+        world._n_hits = n - 1
+        add_hit(world, tiles, met, col, row, tiles.y + (row - 1) * tiles.tile_height,
+          tiles.x + (col - 1) * tiles.tile_width, world._records[tiles].id, SLIDE, t)
+      else
+        hit.other, hit.side, hit.col, hit.row, hit.response, hit.t = tiles, met, col, row,
+          SLIDE, t
+        hit.nx, hit.ny = nx, ny
+      end
     end
   end
-  return face, found
+  world._n_hits = n
+  return stop, face
 end
 
 -- The line scan -------------------------------------------------------------------

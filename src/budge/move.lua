@@ -41,8 +41,8 @@ local stop_forward, stop_backward, box_enter = sweep.stop_forward, sweep.stop_ba
   sweep.box_enter
 local add_hit, has_tile, add_tile_hits, add_line_pair = hits.add, hits.has_tile,
   hits.add_tiles, hits.add_line_pair
+local shift_hits, key_tiles = hits.shift, hits.key_tiles
 local SLIDE, TOUCH, BOUNCE, CROSS = hits.SLIDE, hits.TOUCH, hits.BOUNCE, hits.CROSS
-local NX, NY = hits.NX, hits.NY
 local RULES, oneway_rule, resolve_pair = resolve.RULES, resolve.oneway, fatcross.resolve_pair
 local abs, ceil, floor, min, max, sort, format = math.abs, math.ceil, math.floor, math.min,
   math.max, table.sort, string.format
@@ -76,16 +76,12 @@ local move = {}
 -- The side a phase's contacts are on, from its axis and way. Where LuaJIT is the caller
 -- (phase_stop): in a trace is_x and forward are known, so this is a constant, and so are
 -- hits.add's NX[side] and NY[side] (from SIDES_X[forward], a string read from a table,
--- each was a hash lookup). Lua 5.x's tile paths read the tables below: a call costs more.
+-- each was a hash lookup). Lua 5.x's tile path (layer.tile_stop) writes its sides and
+-- normals out: there a call costs more than the branches.
 local function side_of(is_x, forward)
   if is_x then return forward and "right" or "left" end
   return forward and "floor" or "ceiling"
 end
--- Lua 5.4 quirk: indexed only by a boolean local, because Lua 5.4.4 miscompiles T[a > b]
--- when T is an upvalue (the wrong side came back; spec/world_spec.lua's contact sides
--- fail on lua5.4 when written that way).
-local SIDES_X = {[true] = side_of(true, true), [false] = side_of(true, false)}
-local SIDES_Y = {[true] = side_of(false, true), [false] = side_of(false, false)}
 
 -- The hash part of an axis phase: the swept rectangle, clipped to the bounds of the
 -- hashed solids, scanned with the probe.
@@ -123,74 +119,34 @@ end
 -- Speed: `lua5.4 bench/world.lua --way tiles --count 1000 --frames 60`, 3 fresh runs
 -- each, interleaved, 2026-12-02: 2196-2323 ns per move through axis_phase, phase_stop and
 -- tile_face, 1740-1750 through this and layer.tile_stop.
--- Its stop and hits are phase_stop's written again, on purpose: as one function both
--- call, LuaJIT's tile moves took 173 ns instead of 154 (7 runs), make bench-jit's
--- platformer 612 KB instead of 513 (5 runs), Lua 5.4's tile moves 1569 instead of 1509
--- (`bench/world.lua --way tiles --count 1000`, fresh runs interleaved, 2026-12-02).
--- This form is for two layers or more (their hits carry sort keys: hits.add_tiles writes
--- them); one layer takes lean_stop below.
-local function layers_stop(world, is_x, pos, cross, cross_end, size, delta, done, path)
+-- Its stop and hits (layer.tile_stop's) are phase_stop's written again, on purpose: as
+-- one function both call, LuaJIT's tile moves took 173 ns instead of 154 (7 runs), make
+-- bench-jit's platformer 612 KB instead of 513 (5 runs), Lua 5.4's tile moves 1569
+-- instead of 1509 (`bench/world.lua --way tiles --count 1000`, fresh runs interleaved,
+-- 2026-12-02).
+-- This form is for two layers or more: each layer's tiles are written as hits, kept when
+-- its stop is the nearest yet (moved down over a farther layer's), and given the sort
+-- keys at the end (their hits are sorted). One layer takes layer.tile_stop alone (its
+-- hits are in order, never sorted: hits.add_line_pair says why); `tiles` is the first
+-- layer, unused here (the two have one signature).
+local function layers_stop(world, _, is_x, pos, cross, cross_end, size, delta, done, path)
   local first_hit, forward = world._n_hits, delta > 0
-  local layers, probe = world._layers, world._probe
-  local cols, rows = probe.cols, probe.rows
+  local layers = world._layers
   local best
   for k = 1, #layers do -- (no callback runs in this move: no layer is removed during it)
-    local tiles = layers[k]
-    local face, count = tile_stop(tiles, is_x, forward, pos, size, delta, cross, cross_end,
-      cols, rows)
-    if face then
-      local stop = face
-      if forward then stop = face >= pos + size and before(face, size, pos) or pos
-      elseif face > pos then stop = pos end
-      if best == nil or (forward and stop <= best) or (not forward and stop >= best) then
-        if stop ~= best then best = stop; world._n_hits = first_hit end
-        local side
-        if is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
-        add_tile_hits(world, tiles, side, cols, rows, count,
-          (done + (forward and stop - pos or pos - stop)) / path)
-      end
+    local n = world._n_hits
+    local stop = tile_stop(world, layers[k], is_x, pos, cross, cross_end, size, delta, done,
+      path)
+    if stop ~= nil and (best == nil or (forward and stop < best)
+      or (not forward and stop > best)) then
+      best = stop
+      shift_hits(world, first_hit, n)
+    elseif stop ~= best then -- (a farther stop, or none: its tiles are not met)
+      world._n_hits = n
     end
   end
+  key_tiles(world, first_hit + 1)
   return best
-end
-
--- layers_stop in a world of one tile layer (or none): its one layer's stop, and the tiles
--- as hits without sort keys (the move's hits are in order, never sorted: hits.add_line_pair
--- says why). Speed: without the loop over the layers and the test for keys, the world
--- bench's tile moves on Lua 5.4 run 471 VM instructions instead of 491, 21349 machine
--- instructions instead of 22424 (`lua5.4 bench/instructions.lua --way tiles --count 1000
--- --frames 5 --lua lua5.4`, 2026-12-07).
-local function lean_stop(world, is_x, pos, cross, cross_end, size, delta, done, path)
-  local tiles = world._layers[1]
-  if tiles == nil then return nil end
-  local forward, probe = delta > 0, world._probe
-  local cols, rows = probe.cols, probe.rows
-  local face, count = tile_stop(tiles, is_x, forward, pos, size, delta, cross, cross_end,
-    cols, rows)
-  if face == nil then return nil end
-  local stop = face
-  if forward then stop = face >= pos + size and before(face, size, pos) or pos
-  elseif face > pos then stop = pos end
-  local side
-  if is_x then side = SIDES_X[forward] else side = SIDES_Y[forward] end
-  local t = (done + (forward and stop - pos or pos - stop)) / path
-  local list, n = world._hits, world._n_hits
-  local nx, ny = NX[side], NY[side]
-  for c = 1, count do
-    local col, row = cols[c], rows[c]
-    local hit = list[n + c]
-    if hit == nil then -- (a new record: hits.add writes every field)
-      world._n_hits = n + c - 1
-      add_hit(world, tiles, side, col, row, tiles.y + (row - 1) * tiles.tile_height,
-        tiles.x + (col - 1) * tiles.tile_width, world._records[tiles].id, SLIDE, t)
-    else
-      hit.other, hit.side, hit.col, hit.row, hit.response, hit.t = tiles, side, col, row,
-        SLIDE, t
-      hit.nx, hit.ny = nx, ny
-    end
-  end
-  world._n_hits = n + count
-  return stop
 end
 
 -- LuaJIT's axis phase in a world of one tile layer and actors alone (move_axis_sweep
@@ -741,21 +697,22 @@ end
 local function move_axis_sweep(world, actor, dx, dy, filter)
   if filter ~= nil then return move_filtered(world, actor, dx, dy, filter) end
   if not BRANCH_FREE and world._solid_count == 0 and world._sensor_count == 0 then
-    -- Lua 5.x, tiles alone: straight to layers_stop, without the probe
+    -- Lua 5.x, tiles alone: straight to layer.tile_stop (or layers_stop), without the probe
     local path = (dx < 0 and -dx or dx) + (dy < 0 and -dy or dy)
     local x, y = actor.x, actor.y
-    local one = world._layers[2] == nil
-    local stop = one and lean_stop or layers_stop
+    local layers = world._layers
+    local one = layers[2] == nil
+    local stop, tiles = one and tile_stop or layers_stop, layers[1]
     if dx ~= 0 then
       world._round = 1
       local width, height = actor.width, actor.height
-      x = stop(world, true, x, y, y + height, width, dx, 0, path) or x + dx
+      x = stop(world, tiles, true, x, y, y + height, width, dx, 0, path) or x + dx
     end
     if dy ~= 0 then
       world._round = 2
       local width, height = actor.width, actor.height
-      y = stop(world, false, y, x, x + width, height, dy, (dx < 0 and -dx or dx) + 0,
-        path) or y + dy
+      y = stop(world, tiles, false, y, x, x + width, height, dy,
+        (dx < 0 and -dx or dx) + 0, path) or y + dy
     end
     actor.x, actor.y = x, y
     return one -- (no solid and no sensor on this path: one layer's hits are in order)
