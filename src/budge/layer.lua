@@ -575,7 +575,7 @@ end
 ---@param delta number
 ---@param done number
 ---@param path number
----@return number? stop, number face
+---@return number? stop, number? face
 function layer.tile_stop(world, tiles, is_x, pos, cross, cross_end, size, delta, done, path)
   if tiles == nil then return nil end
   local forward = delta > 0
