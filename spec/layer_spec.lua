@@ -62,8 +62,8 @@ local SIDES = {[true] = {[true] = "right -1 0", [false] = "left 1 0"},
   [false] = {[true] = "floor 0 -1", [false] = "ceiling 0 1"}}
 
 -- tile_stop's answer for probe p as tile_face's (face, count, p.cols and p.rows), from the
--- hits it writes into a world of its own (after 2 hits already there, whose records it
--- reuses, and beyond them new ones), its stop checked against the axis rules' (sweep's)
+-- hits it writes into a world of its own (after the 2 hits already there: into the spare
+-- record past them, which held another contact, then new ones), its stop checked against the axis rules' (sweep's)
 -- for that face and each hit's side, normal, time and response.
 local function tile_stop_answer(tiles, p, case)
   local old = {other = false, side = "left", col = 0, row = 0, response = "touch", t = 1,

@@ -270,7 +270,8 @@ describe("world:add_tiles", function()
 
   it("gives a tile's hits the face's normal, whichever side the record held before", function()
     -- (the records are reused from move to move: each side's writer must set nx and ny;
-    -- one layer, two layers and a solid take the three writers)
+    -- one layer, two layers and a solid take each interpreter's writers: LuaJIT's three,
+    -- Lua 5.x's layer.tile_stop and the solids' path)
     local grid = grid8(function(row, col) return row == 1 or row == 8 or col == 1 or col == 8 end)
     for _, extra in ipairs({"none", "layer", "solid"}) do
       local world = budge.new_world()
@@ -288,6 +289,49 @@ describe("world:add_tiles", function()
       assert.same({"right -1 0", "right -1 0", "floor 0 -1", "left 1 0", "ceiling 0 1",
         "right -1 0", "floor 0 -1", "left 1 0", "ceiling 0 1"}, found)
     end
+  end)
+
+  it("meets every layer whose face is the nearest, in the order the layers were added, and "
+    .. "no farther layer, whichever order they were added in", function()
+    -- (three layers of 8 px tiles: two with a wall or floor on the same line, one beyond:
+    -- a layer met after a farther one's hits replaces them, one met at the same face adds
+    -- to them; tiles alone and with a sensor take the two paths that keep them)
+    local orders = {{"near1", "near2", "far"}, {"near1", "far", "near2"},
+      {"near2", "near1", "far"}, {"near2", "far", "near1"}, {"far", "near1", "near2"},
+      {"far", "near2", "near1"}}
+    local checked = 0
+    for _, extra in ipairs({"none", "sensor"}) do
+      for _, axis in ipairs({"x", "y"}) do
+        for _, order in ipairs(orders) do
+          local world = budge.new_world()
+          local names = {}
+          for _, name in ipairs(order) do
+            local line = name == "far" and 4 or 2 -- (tiles 24-32 px, or 8-16)
+            local grid = grid8(function(row, col) return (axis == "x" and col or row) == line end)
+            names[world:add_tiles(grid, 8, 8)] = name
+          end
+          if extra == "sensor" then world:add_sensor(box(200, 200, 4, 4)) end
+          local actor = axis == "x" and box(0, 1, 4, 6) or box(1, 0, 6, 4)
+          world:add_actor(actor)
+          local x, y, n, list = world:move(actor, axis == "x" and 20 or 0, axis == "y" and 20 or 0)
+          local found = {x, y, n}
+          for i = 1, n do
+            found[#found + 1] = ("%s %s %d,%d %.17g"):format(names[list[i].other], list[i].side,
+              list[i].col, list[i].row, list[i].t)
+          end
+          local want = axis == "x" and {4, 1, 2} or {1, 4, 2}
+          for _, name in ipairs(order) do
+            if name ~= "far" then
+              want[#want + 1] = axis == "x" and name .. " right 2,1 0.20000000000000001"
+                or name .. " floor 1,2 0.20000000000000001"
+            end
+          end
+          assert.same(want, found, extra .. ", " .. axis .. ", " .. table.concat(order, " "))
+          checked = checked + 1
+        end
+      end
+    end
+    assert.equal(24, checked)
   end)
 
   it("gives a contact at the start of the y phase t = +0 when dx is -0, on every path", function()

@@ -60,13 +60,14 @@ local MAX_BOUNCES = 16
 local HUGE = math.huge
 -- In a world of tiles and actors, LuaJIT takes lean_phase's shape with one layer (one
 -- branch on layer.tile_line's answer) and phase_stop's with more (the move's values in
--- the probe, tile_face's reads), and Lua 5.1-5.4 layers_stop's (positional values,
--- layer.tile_stop): see those. Magnitudes and the low end of a sweep are math.abs and
--- math.min on LuaJIT, which compile to no branch (a test of a sign is a side trace
--- carrying the rest of the move: make bench-jit's platformer needed 346 KB of machine
--- code instead of 366 with a budget that never runs out, median of 9 runs each,
--- interleaved, 2026-12-02), and the tests on Lua 5.1-5.4, where those are calls into C
--- (with them, the world bench's box moves ran 3% more instructions on Lua 5.4).
+-- the probe, tile_face's reads), and Lua 5.1-5.4 layer.tile_stop's (positional values,
+-- the hits written as it finds them), through layers_stop with more than one layer: see
+-- those. Magnitudes and the low end of a sweep are math.abs and math.min on LuaJIT,
+-- which compile to no branch (a test of a sign is a side trace carrying the rest of the
+-- move: make bench-jit's platformer needed 346 KB of machine code instead of 366 with a
+-- budget that never runs out, median of 9 runs each, interleaved, 2026-12-02), and the
+-- tests on Lua 5.1-5.4, where those are calls into C (with them, the world bench's box
+-- moves ran 3% more instructions on Lua 5.4).
 local BRANCH_FREE = rawget(_G, "jit") ~= nil
 
 local move = {}
@@ -75,9 +76,9 @@ local move = {}
 
 -- The side a phase's contacts are on, from its axis and way. Where LuaJIT is the caller
 -- (phase_stop): in a trace is_x and forward are known, so this is a constant, and so are
--- hits.add's NX[side] and NY[side] (from SIDES_X[forward], a string read from a table,
--- each was a hash lookup). Lua 5.x's tile path (layer.tile_stop) writes its sides and
--- normals out: there a call costs more than the branches.
+-- hits.add's NX[side] and NY[side] (with the side a string read from a table indexed by
+-- `forward`, each was a hash lookup). Lua 5.x's tile path (layer.tile_stop) writes its
+-- sides and normals out: there a call costs more than the branches.
 local function side_of(is_x, forward)
   if is_x then return forward and "right" or "left" end
   return forward and "floor" or "ceiling"
@@ -125,10 +126,11 @@ end
 -- instead of 1509 (`bench/world.lua --way tiles --count 1000`, fresh runs interleaved,
 -- 2026-12-02).
 -- This form is for two layers or more: each layer's tiles are written as hits, kept when
--- its stop is the nearest yet (moved down over a farther layer's), and given the sort
--- keys at the end (their hits are sorted). One layer takes layer.tile_stop alone (its
--- hits are in order, never sorted: hits.add_line_pair says why); `tiles` is the first
--- layer, unused here (the two have one signature).
+-- its stop is at least as near as the nearest yet (a nearer one's moved down over a
+-- farther layer's), and given the sort keys at the end (their hits are sorted). One
+-- layer takes layer.tile_stop alone (its hits are in order, never sorted:
+-- hits.add_line_pair says why); `tiles` is the first layer, unused here (the two have one
+-- signature).
 local function layers_stop(world, _, is_x, pos, cross, cross_end, size, delta, done, path)
   local first_hit, forward = world._n_hits, delta > 0
   local layers = world._layers
