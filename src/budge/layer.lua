@@ -550,7 +550,7 @@ end
 ---that stops it are appended to world's hits as "slide" contacts at the stop's time, in
 ---order across, without the sort keys (hits.key_tiles writes them where hits from several
 ---layers are sorted: move.lua's layers_stop). Returns where the box stops and the face,
----or nil when no tile of `tiles` (nil: none) stops it.
+---or nil when no tile of `tiles` stops it.
 ---Speed: the same arithmetic and reads as tile_line and list_line, with span and
 ---list_line written out and comparisons for min and max (on Lua 5.x a call, even to
 ---math.min, costs more than a branch). `lua5.4 bench/world.lua --way tiles
@@ -566,7 +566,7 @@ end
 ---On LuaJIT its loops cost more than the calls (the same move took 786 ns against 152):
 ---LuaJIT keeps tile_line. spec/layer_spec.lua holds it to a brute force.
 ---@param world budge.World
----@param tiles budge.TileLayer?
+---@param tiles budge.TileLayer
 ---@param is_x boolean
 ---@param pos number
 ---@param cross number
@@ -577,7 +577,6 @@ end
 ---@param path number
 ---@return number? stop, number? face
 function layer.tile_stop(world, tiles, is_x, pos, cross, cross_end, size, delta, done, path)
-  if tiles == nil then return nil end
   local forward = delta > 0
   local cols = tiles.cols
   local origin, tile, inverse, count, stride

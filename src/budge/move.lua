@@ -703,8 +703,8 @@ local function move_axis_sweep(world, actor, dx, dy, filter)
     local path = (dx < 0 and -dx or dx) + (dy < 0 and -dy or dy)
     local x, y = actor.x, actor.y
     local layers = world._layers
-    local one = layers[2] == nil
-    local stop, tiles = one and tile_stop or layers_stop, layers[1]
+    local tiles, one = layers[1], layers[2] == nil
+    local stop = one and tiles and tile_stop or layers_stop -- (no layer: layers_stop's none)
     if dx ~= 0 then
       world._round = 1
       local width, height = actor.width, actor.height
