@@ -88,6 +88,54 @@ describe("responses", function()
     assert.is_true(checked > cases / 3, "checked " .. checked)
   end)
 
+  it("slide (and true) is exactly the move without a filter in " .. scale(3000) .. " random worlds "
+    .. "of solids and actors alone (LuaJIT's lean phase), several solids met at once", function()
+    local rng = random_source.new(20261207)
+    local checked, several = 0, 0
+    local cases = scale(3000)
+    for case = 1, cases do
+      local boxes = {}
+      for i = 1, rng(1, 60) do -- (on a grid of 8 px three times in four: faces that tie)
+        local on_grid = rng(1, 4) > 1
+        boxes[i] = {x = on_grid and rng(0, 24) * 8 or rng(0, 760) / 4,
+          y = on_grid and rng(0, 24) * 8 or rng(0, 760) / 4,
+          width = on_grid and 8 * rng(1, 3) or rng(0, 160) / 4,
+          height = on_grid and 8 * rng(1, 3) or rng(0, 160) / 4,
+          wall_type = rng(1, 6) == 1 and "oneway" or nil, name = "s" .. i}
+      end
+      local ax, ay = rng(0, 24) * 8 + rng(0, 1) * rng(0, 7) / 2, rng(0, 24) * 8
+      local aw, ah = rng(1, 6) * 4, rng(1, 6) * 4
+      local dx, dy = rng(-160, 160) / 4, rng(-160, 160) / 4
+      local results, clear = {}, true
+      for k = 1, 3 do
+        local world = budge.new_world({cell_size = ({16, 64, 50})[case % 3 + 1]})
+        for i = 1, #boxes do
+          local b = boxes[i]
+          world:add_solid({x = b.x, y = b.y, width = b.width, height = b.height,
+            wall_type = b.wall_type, name = b.name})
+        end
+        if world:query_rect(ax, ay, aw, ah) and select(2, world:query_rect(ax, ay, aw, ah)) > 0
+        then clear = false end
+        local actor = world:add_actor(box(ax, ay, aw, ah))
+        if k == 2 then actor.filter = always("slide") elseif k == 3 then actor.filter = always(true) end
+        local x, y, n, hits = world:move(actor, dx, dy)
+        results[k] = trace(x, y, n, hits)
+        if k == 1 then -- (a phase that met several solids: the move sorts its hits)
+          for i = 2, n do
+            if hits[i].side == hits[i - 1].side then several = several + 1 break end
+          end
+        end
+      end
+      if clear then
+        checked = checked + 1
+        assert.are.equal(results[1], results[2])
+        assert.are.equal(results[1], results[3])
+      end
+    end
+    assert.is_true(checked > cases / 3, "checked " .. checked)
+    assert.is_true(several > cases / 20, "several " .. several .. " of " .. checked)
+  end)
+
   it("slide is exactly the move without a filter where the far side of the band it looks "
     .. "at rounds short (wide actors across 0, faces between the two roundings)", function()
     -- The band a filtered phase looks at ends at its reach, high = (pos + delta) + size
