@@ -114,8 +114,8 @@ describe("responses", function()
           world:add_solid({x = b.x, y = b.y, width = b.width, height = b.height,
             wall_type = b.wall_type, name = b.name})
         end
-        if world:query_rect(ax, ay, aw, ah) and select(2, world:query_rect(ax, ay, aw, ah)) > 0
-        then clear = false end
+        local _, inside = world:query_rect(ax, ay, aw, ah)
+        if inside > 0 then clear = false end
         local actor = world:add_actor(box(ax, ay, aw, ah))
         if k == 2 then actor.filter = always("slide") elseif k == 3 then actor.filter = always(true) end
         local x, y, n, hits = world:move(actor, dx, dy)
