@@ -773,9 +773,12 @@ local function move_axis_sweep(world, actor, dx, dy, filter)
     actor.x, actor.y = x, y
     return true
   end
-  if BRANCH_FREE and world._sensor_count == 0 and world._layers[1] == nil then
+  if BRANCH_FREE and world._sensor_count == 0 and world._layers[1] == nil
+    and world._solid_count > 0 then
     -- LuaJIT, solids and actors alone: straight to lean_solids_phase (the hits are in
-    -- order unless a phase met several solids: then the move sorts them)
+    -- order unless a phase met several solids: then the move sorts them). (With no solid
+    -- left, phase_stop's path, which skips the hash: its bounds keep the solids' that
+    -- were removed, and lean_solids_phase would scan its placeholders; found by review.)
     local path = abs(dx) + abs(dy)
     world._mixed = 0
     local x, y = actor.x, actor.y
