@@ -886,8 +886,9 @@ end
 -- (same box, same stop), and on a tie it counts only in the record's first cell in the
 -- scan's order, (max(its first column, the scan's), max(its first row, the scan's)), so
 -- that the first meeting keeps its place, as the stamps do in scan_cell, at a constant
--- cost (a search of the touch list would cost its length at every tie).
-local function consider_packed(probe, pack, base, face, cx, cy)
+-- cost (a search of the touch list would cost its length at every tie). The scan's first
+-- column and row are scan_cx0 and scan_cy0, its hash's cell size `size`.
+local function consider_packed(probe, pack, base, face, cx, cy, scan_cx0, scan_cy0, size)
   local flag = pack[base + 5]
   local stop = stop_at(probe, face, flag < 0)
   if stop == nil then return end -- (a solid removed during the move: no entry passes the
@@ -897,10 +898,9 @@ local function consider_packed(probe, pack, base, face, cx, cy)
     probe.best = stop
     touched = 0
   else
-    local size = probe.cell_size
     local first_cx, first_cy = floor(pack[base + 1] / size), floor(pack[base + 2] / size)
-    if first_cx < probe.scan_cx0 then first_cx = probe.scan_cx0 end
-    if first_cy < probe.scan_cy0 then first_cy = probe.scan_cy0 end
+    if first_cx < scan_cx0 then first_cx = scan_cx0 end
+    if first_cy < scan_cy0 then first_cy = scan_cy0 end
     if cx ~= first_cx or cy ~= first_cy then return end -- met in an earlier cell
   end
   touched = touched + 1
@@ -911,9 +911,11 @@ end
 
 -- scan_cell over the packed boxes of the cells the probe's rectangle touches: `count`
 -- cells, `columns` to a row, from (cx0, cy0), row by row.
--- probe.face_slot and cross_slot are the slots of the face on the axis and of the low side
--- across it (1: x, 2: y, 3: right, 4: bottom); probe.sign is 1 moving forward and -1
--- moving back, so that one test on the face times the sign keeps what stop_forward or
+-- face_slot and cross_slot are the slots of the face on the axis and of the low side
+-- across it (1: x, 2: y, 3: right, 4: bottom); `sign` is 1 moving forward and -1
+-- moving back, signed_reach the reach times sign, signed_pos the low end of the faces that
+-- can stop the box times sign, and cross, cross_end the box's sides across the axis, so
+-- that one test on the face times the sign keeps what stop_forward or
 -- stop_backward can stop at: a face at or short of the reach, at or ahead of the box's
 -- start (a superset: stop_at decides). Across, the strict overlap, exactly: for finite
 -- numbers a - b > 0 if and only if a > b (a difference rounds to 0 only when they are
@@ -934,8 +936,9 @@ end
 -- reaching the loop then aborted ("inner loop in root trace"), and the functions of the
 -- move were blacklisted one after the other. With the break: 0 in 10.
 local TINY = 2 ^ -1022
-local function scan_packs(self, probe, cx0, cy0, columns, count)
-  local store, span = self._store, self._span
+local function scan_packs(self, probe, cx0, cy0, columns, count, face_slot, cross_slot, sign,
+                          signed_reach, signed_pos, cross, cross_end)
+  local store, span, size = self._store, self._span, self.cell_size
   local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local k, base, last, cx, cy = -1, 1, -5, 0, 0
   while true do
@@ -948,12 +951,12 @@ local function scan_packs(self, probe, cx0, cy0, columns, count)
       local first = span[2 * slot - 1]
       if first then base, last = first, span[2 * slot] end
     else
-      local face = store[base + probe.face_slot]
-      local signed = probe.sign * face
-      if min(min(probe.signed_reach - signed, signed - probe.signed_pos) + TINY,
-        probe.cross_end - store[base + probe.cross_slot],
-        store[base + probe.cross_slot + 2] - probe.cross) > 0 then
-        consider_packed(probe, store, base, face, cx, cy)
+      local face = store[base + face_slot]
+      local signed = sign * face
+      if min(min(signed_reach - signed, signed - signed_pos) + TINY,
+        cross_end - store[base + cross_slot],
+        store[base + cross_slot + 2] - cross) > 0 then
+        consider_packed(probe, store, base, face, cx, cy, cx0, cy0, size)
       end
       base = base + 6
     end
@@ -967,13 +970,12 @@ end
 -- --count 1000 --frames 60`, 5 fresh runs each, interleaved, 2026-12-02: 3784 ns per move
 -- with the records' scan (scan_cell: unpacked, as Lua 5.x had it), 3470 with this; merged
 -- boxes 3453 -> 3301.
-local function scan_packs_compared(self, probe, cx0, cy0, columns, count)
-  local store, span = self._store, self._span
+local function scan_packs_compared(self, probe, cx0, cy0, columns, count, face_slot,
+                                   cross_slot, forward, pos, edge, reach, cross, cross_end)
+  local store, span, size = self._store, self._span, self.cell_size
   local gx0, gy0, gw = self._gx0, self._gy0, self._gw
-  local face_slot, cross_slot = probe.face_slot, probe.cross_slot
-  local cross, cross_end = probe.cross, probe.cross_end
-  local low, high = probe.pos, probe.reach -- (forward; back, from the reach to the edge)
-  if not probe.forward then low, high = high, probe.edge end
+  local low, high = pos, reach -- (forward; back, from the reach to the edge)
+  if not forward then low, high = reach, edge end
   for k = 0, count - 1 do
     local row = floor(k / columns)
     local cx, cy = cx0 + (k - row * columns), cy0 + row
@@ -984,11 +986,71 @@ local function scan_packs_compared(self, probe, cx0, cy0, columns, count)
         local face = store[base + face_slot]
         if face >= low and face <= high and store[base + cross_slot] < cross_end
           and store[base + cross_slot + 2] > cross then
-          consider_packed(probe, store, base, face, cx, cy)
+          consider_packed(probe, store, base, face, cx, cy, cx0, cy0, size)
         end
       end
     end
   end
+end
+
+-- The probe over a packed hash's cells cx0..cx1, cy0..cy1 (scan_packs on LuaJIT,
+-- scan_packs_compared on Lua 5.1-5.4), the box's values (as the probe holds them) given.
+-- Speed: the scans' values as arguments, not written into the probe for the scan to read
+-- back (with move.lua's lean_solids_phase, which hands them over the same way): `luajit
+-- bench/instructions.lua --way W --count 100 --frames 300` counted 3315-3360 machine
+-- instructions a move of merged boxes instead of 3492-3519 (3 runs each), 3472-3478 a
+-- move of a box per tile instead of 3642-3649 (2 runs each); `luajit bench/world.lua
+-- --way W --count 100`, fresh runs interleaved, medians in ns a move: merged 332 -> 323
+-- (9 runs), box per tile 355 -> 326 (7 runs), 2026-12-07 (AMD EPYC). No trace aborts in
+-- either way's moves (`luajit -jv`, 200 frames), as before: the scan's loop reads these
+-- values and never changes them, so no exit has to write them back.
+local function packed_scan(self, probe, is_x, forward, pos, edge, reach, cross, cross_end,
+                           cx0, cy0, cx1, cy1)
+  local face_slot, cross_slot
+  if is_x then face_slot, cross_slot = forward and 1 or 3, 2
+  else face_slot, cross_slot = forward and 2 or 4, 1 end
+  local columns, count
+  cx0, cy0, columns, count = slotted(self, cx0, cy0, cx1, cy1)
+  if BRANCH_FREE then
+    local sign = forward and 1 or -1
+    scan_packs(self, probe, cx0, cy0, columns, count, face_slot, cross_slot, sign,
+      sign * reach, forward and pos or -edge, cross, cross_end)
+  else
+    scan_packs_compared(self, probe, cx0, cy0, columns, count, face_slot, cross_slot,
+      forward, pos, edge, reach, cross, cross_end)
+  end
+end
+
+---Hash:axis_stop with the box's values given rather than read from the probe: its
+---is_x, cross and cross_end are not read (nor written, unless the hash is small, has big
+---records or is not packed: then Hash:axis_stop runs, with them written); forward, pos,
+---edge, reach, size and blocks_oneway must be in the probe (the stops read them there),
+---best nil and touched 0. The same outcomes. For move.lua's lean_solids_phase.
+---@param x0 number
+---@param y0 number
+---@param x1 number
+---@param y1 number
+---@param probe budge.AxisProbe
+---@param is_x boolean
+---@param forward boolean
+---@param pos number
+---@param edge number
+---@param reach number
+---@param cross number
+---@param cross_end number
+function Hash:lean_stop(x0, y0, x1, y1, probe, is_x, forward, pos, edge, reach, cross,
+                        cross_end)
+  local size = self.cell_size
+  local cx0, cy0 = floor(x0 / size), floor(y0 / size)
+  local cx1, cy1 = floor(x1 / size), floor(y1 / size)
+  local n = self._n
+  if n <= SMALL or (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > n or self._big[1]
+    or not self._packed then
+    probe.is_x, probe.cross, probe.cross_end = is_x, cross, cross_end
+    return self:axis_stop(x0, y0, x1, y1, probe)
+  end
+  packed_scan(self, probe, is_x, forward, pos, edge, reach, cross, cross_end, cx0, cy0, cx1,
+    cy1)
 end
 
 ---Runs the probe over the records (each with its box's x, y, width, height copied in,
@@ -1022,19 +1084,8 @@ function Hash:axis_stop(x0, y0, x1, y1, probe)
     return
   end
   if self._packed then
-    local forward = probe.forward
-    if probe.is_x then probe.face_slot, probe.cross_slot = forward and 1 or 3, 2
-    else probe.face_slot, probe.cross_slot = forward and 2 or 4, 1 end
-    cx0, cy0, columns, count = slotted(self, cx0, cy0, cx1, cy1)
-    probe.scan_cx0, probe.scan_cy0, probe.cell_size = cx0, cy0, size
-    if BRANCH_FREE then
-      local sign = forward and 1 or -1
-      probe.sign, probe.signed_reach = sign, sign * probe.reach
-      probe.signed_pos = forward and probe.pos or -probe.edge
-      scan_packs(self, probe, cx0, cy0, columns, count)
-    else
-      scan_packs_compared(self, probe, cx0, cy0, columns, count)
-    end
+    packed_scan(self, probe, probe.is_x, probe.forward, probe.pos, probe.edge, probe.reach,
+      probe.cross, probe.cross_end, cx0, cy0, cx1, cy1)
   else -- (one flat loop over the cells, as in collect; the key is the one insert uses)
     for k = 0, count - 1 do
       local row = floor(k / columns)

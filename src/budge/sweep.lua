@@ -62,7 +62,9 @@ end
 ---disturb it.
 ---LuaJIT shaping: these values travel in a table rather than as arguments, which keeps
 ---each compiled scan loop small: LuaJIT aborts a trace whose exits carry more live values
----than it can coalesce (commit 2e07fe1; aborts listed by make bench-jit).
+---than it can coalesce (commit 2e07fe1; aborts listed by make bench-jit). (The scan of a
+---packed hash takes its loop's values as arguments: its loop only reads them, see
+---hash.lua's packed_scan.)
 ---@class budge.AxisProbe
 ---@field is_x boolean moving along x (else y)
 ---@field forward boolean toward +x or +y
@@ -93,14 +95,6 @@ end
 ---from (move.lua: hits from one are already in order)
 ---@field cols integer[] output of layer.tile_face: the tiles on the face found
 ---@field rows integer[]
----@field sign number Hash:axis_stop's scratch over packed cells: 1 forward, -1 back
----@field signed_reach number reach times sign
----@field signed_pos number the low end of the faces that can stop the box, times sign
----@field face_slot integer the slot of the face on the axis in a packed cell (1-4)
----@field cross_slot integer the slot of the low side across the axis (1 or 2)
----@field scan_cx0 integer the first cell column and row of the scanned rectangle
----@field scan_cy0 integer
----@field cell_size number the scanned hash's cell size
 
 ---A new, empty axis probe.
 ---@return budge.AxisProbe
@@ -108,8 +102,7 @@ function sweep.new_probe()
   return {is_x = true, forward = true, pos = 0, size = 0, edge = 0, reach = 0, cross = 0,
     cross_end = 0, blocks_oneway = false, before = 0, path = 1, touch = {}, touched = 0,
     touch_left = {}, touch_top = {}, touch_id = {}, payload = false,
-    sources = 0, cols = {1, 1}, rows = {1, 1}, sign = 1, signed_reach = 0, signed_pos = 0,
-    face_slot = 1, cross_slot = 2, scan_cx0 = 0, scan_cy0 = 0, cell_size = 1}
+    sources = 0, cols = {1, 1}, rows = {1, 1}}
 end
 
 ---One axis of a slab clip (Liang-Barsky): narrows [enter, leave], the fractions of the
