@@ -810,20 +810,18 @@ function Hash:collect_touching(x0, y0, x1, y1, out, n)
   return collect_kept(self, x0, y0, x1, y1, out, n, touching)
 end
 
--- Where the probe's box stops against a face (a low face moving forward, a high one moving
--- back), as sweep.stop_forward/backward decide, when that is no worse than the best stop
--- so far; else nil.
-local function stop_at(probe, face, oneway)
+-- Where the box (the probe's values, given: see sweep.AxisProbe) stops against a face (a
+-- low face moving forward, a high one moving back), as sweep.stop_forward/backward decide,
+-- when that is no worse than the best stop so far, `best`; else nil.
+local function stop_at(face, oneway, best, forward, pos, edge, reach, size, blocks_oneway)
   local stop
-  if probe.forward then
-    stop = stop_forward(face, probe.pos, probe.edge, probe.reach, probe.size, oneway,
-      probe.blocks_oneway)
+  if forward then
+    stop = stop_forward(face, pos, edge, reach, size, oneway, blocks_oneway)
   else
-    stop = stop_backward(face, probe.pos, probe.edge, probe.reach, oneway, probe.blocks_oneway)
+    stop = stop_backward(face, pos, edge, reach, oneway, blocks_oneway)
   end
   if stop == nil then return nil end
-  local best = probe.best
-  if best ~= nil and (probe.forward and stop > best or not probe.forward and stop < best) then
+  if best ~= nil and (forward and stop > best or not forward and stop < best) then
     return nil
   end
   return stop
@@ -887,10 +885,13 @@ end
 -- scan's order, (max(its first column, the scan's), max(its first row, the scan's)), so
 -- that the first meeting keeps its place, as the stamps do in scan_cell, at a constant
 -- cost (a search of the touch list would cost its length at every tie). The scan's first
--- column and row are scan_cx0 and scan_cy0, its hash's cell size `size`.
-local function consider_packed(probe, pack, base, face, cx, cy, scan_cx0, scan_cy0, size)
+-- column and row are scan_cx0 and scan_cy0, its hash's cell size `cell`; the box's values
+-- (the probe's) from `forward` on.
+local function consider_packed(probe, pack, base, face, cx, cy, scan_cx0, scan_cy0, cell,
+                               forward, pos, edge, reach, size, blocks_oneway)
   local flag = pack[base + 5]
-  local stop = stop_at(probe, face, flag < 0)
+  local stop = stop_at(face, flag < 0, probe.best, forward, pos, edge, reach, size,
+    blocks_oneway)
   if stop == nil then return end -- (a solid removed during the move: no entry passes the
   -- scan's test, solids.retire emptied them; the record is not read here)
   local touched = probe.touched
@@ -898,7 +899,7 @@ local function consider_packed(probe, pack, base, face, cx, cy, scan_cx0, scan_c
     probe.best = stop
     touched = 0
   else
-    local first_cx, first_cy = floor(pack[base + 1] / size), floor(pack[base + 2] / size)
+    local first_cx, first_cy = floor(pack[base + 1] / cell), floor(pack[base + 2] / cell)
     if first_cx < scan_cx0 then first_cx = scan_cx0 end
     if first_cy < scan_cy0 then first_cy = scan_cy0 end
     if cx ~= first_cx or cy ~= first_cy then return end -- met in an earlier cell
@@ -937,8 +938,9 @@ end
 -- move were blacklisted one after the other. With the break: 0 in 10.
 local TINY = 2 ^ -1022
 local function scan_packs(self, probe, cx0, cy0, columns, count, face_slot, cross_slot, sign,
-                          signed_reach, signed_pos, cross, cross_end)
-  local store, span, size = self._store, self._span, self.cell_size
+                          signed_reach, signed_pos, cross, cross_end, forward, pos, edge,
+                          reach, size, blocks_oneway)
+  local store, span, cell = self._store, self._span, self.cell_size
   local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local k, base, last, cx, cy = -1, 1, -5, 0, 0
   while true do
@@ -956,7 +958,8 @@ local function scan_packs(self, probe, cx0, cy0, columns, count, face_slot, cros
       if min(min(signed_reach - signed, signed - signed_pos) + TINY,
         cross_end - store[base + cross_slot],
         store[base + cross_slot + 2] - cross) > 0 then
-        consider_packed(probe, store, base, face, cx, cy, cx0, cy0, size)
+        consider_packed(probe, store, base, face, cx, cy, cx0, cy0, cell, forward, pos, edge,
+          reach, size, blocks_oneway)
       end
       base = base + 6
     end
@@ -971,8 +974,9 @@ end
 -- with the records' scan (scan_cell: unpacked, as Lua 5.x had it), 3470 with this; merged
 -- boxes 3453 -> 3301.
 local function scan_packs_compared(self, probe, cx0, cy0, columns, count, face_slot,
-                                   cross_slot, forward, pos, edge, reach, cross, cross_end)
-  local store, span, size = self._store, self._span, self.cell_size
+                                   cross_slot, cross, cross_end, forward, pos, edge, reach,
+                                   size, blocks_oneway)
+  local store, span, cell = self._store, self._span, self.cell_size
   local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local low, high = pos, reach -- (forward; back, from the reach to the edge)
   if not forward then low, high = reach, edge end
@@ -986,7 +990,8 @@ local function scan_packs_compared(self, probe, cx0, cy0, columns, count, face_s
         local face = store[base + face_slot]
         if face >= low and face <= high and store[base + cross_slot] < cross_end
           and store[base + cross_slot + 2] > cross then
-          consider_packed(probe, store, base, face, cx, cy, cx0, cy0, size)
+          consider_packed(probe, store, base, face, cx, cy, cx0, cy0, cell, forward, pos,
+            edge, reach, size, blocks_oneway)
         end
       end
     end
@@ -1004,8 +1009,8 @@ end
 -- (9 runs), box per tile 355 -> 326 (7 runs), 2026-12-07 (AMD EPYC). No trace aborts in
 -- either way's moves (`luajit -jv`, 200 frames), as before: the scan's loop reads these
 -- values and never changes them, so no exit has to write them back.
-local function packed_scan(self, probe, is_x, forward, pos, edge, reach, cross, cross_end,
-                           cx0, cy0, cx1, cy1)
+local function packed_scan(self, probe, is_x, forward, pos, edge, reach, size, blocks_oneway,
+                           cross, cross_end, cx0, cy0, cx1, cy1)
   local face_slot, cross_slot
   if is_x then face_slot, cross_slot = forward and 1 or 3, 2
   else face_slot, cross_slot = forward and 2 or 4, 1 end
@@ -1014,18 +1019,19 @@ local function packed_scan(self, probe, is_x, forward, pos, edge, reach, cross, 
   if BRANCH_FREE then
     local sign = forward and 1 or -1
     scan_packs(self, probe, cx0, cy0, columns, count, face_slot, cross_slot, sign,
-      sign * reach, forward and pos or -edge, cross, cross_end)
+      sign * reach, forward and pos or -edge, cross, cross_end, forward, pos, edge, reach,
+      size, blocks_oneway)
   else
-    scan_packs_compared(self, probe, cx0, cy0, columns, count, face_slot, cross_slot,
-      forward, pos, edge, reach, cross, cross_end)
+    scan_packs_compared(self, probe, cx0, cy0, columns, count, face_slot, cross_slot, cross,
+      cross_end, forward, pos, edge, reach, size, blocks_oneway)
   end
 end
 
----Hash:axis_stop with the box's values given rather than read from the probe: its
----is_x, cross and cross_end are not read (nor written, unless the hash is small, has big
----records or is not packed: then Hash:axis_stop runs, with them written); forward, pos,
----edge, reach, size and blocks_oneway must be in the probe (the stops read them there),
----best nil and touched 0. The same outcomes. For move.lua's lean_solids_phase.
+---Hash:axis_stop with the box's values given rather than read from the probe (see
+---sweep.AxisProbe; blocks_oneway is `not is_x and forward`), for move.lua's
+---lean_solids_phase: the probe holds only its outputs (best nil and touched 0 when it
+---starts), unless the hash is small, has big records or is not packed: then the values
+---are written into it and Hash:axis_stop runs. The same outcomes.
 ---@param x0 number
 ---@param y0 number
 ---@param x1 number
@@ -1036,21 +1042,25 @@ end
 ---@param pos number
 ---@param edge number
 ---@param reach number
+---@param size number
 ---@param cross number
 ---@param cross_end number
-function Hash:lean_stop(x0, y0, x1, y1, probe, is_x, forward, pos, edge, reach, cross,
+function Hash:lean_stop(x0, y0, x1, y1, probe, is_x, forward, pos, edge, reach, size, cross,
                         cross_end)
-  local size = self.cell_size
-  local cx0, cy0 = floor(x0 / size), floor(y0 / size)
-  local cx1, cy1 = floor(x1 / size), floor(y1 / size)
+  local cell = self.cell_size
+  local cx0, cy0 = floor(x0 / cell), floor(y0 / cell)
+  local cx1, cy1 = floor(x1 / cell), floor(y1 / cell)
   local n = self._n
   if n <= SMALL or (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > n or self._big[1]
     or not self._packed then
-    probe.is_x, probe.cross, probe.cross_end = is_x, cross, cross_end
+    probe.is_x, probe.forward, probe.pos, probe.edge, probe.reach = is_x, forward, pos, edge,
+      reach
+    probe.size, probe.cross, probe.cross_end = size, cross, cross_end
+    probe.blocks_oneway = not is_x and forward
     return self:axis_stop(x0, y0, x1, y1, probe)
   end
-  packed_scan(self, probe, is_x, forward, pos, edge, reach, cross, cross_end, cx0, cy0, cx1,
-    cy1)
+  packed_scan(self, probe, is_x, forward, pos, edge, reach, size, not is_x and forward, cross,
+    cross_end, cx0, cy0, cx1, cy1)
 end
 
 ---Runs the probe over the records (each with its box's x, y, width, height copied in,
@@ -1085,7 +1095,7 @@ function Hash:axis_stop(x0, y0, x1, y1, probe)
   end
   if self._packed then
     packed_scan(self, probe, probe.is_x, probe.forward, probe.pos, probe.edge, probe.reach,
-      probe.cross, probe.cross_end, cx0, cy0, cx1, cy1)
+      probe.size, probe.blocks_oneway, probe.cross, probe.cross_end, cx0, cy0, cx1, cy1)
   else -- (one flat loop over the cells, as in collect; the key is the one insert uses)
     for k = 0, count - 1 do
       local row = floor(k / columns)

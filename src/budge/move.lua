@@ -285,21 +285,18 @@ end
 -- LuaJIT compiles a move differently from run to run). Traces LuaJIT compiles for the
 -- moves alone (the world built with the JIT off, then 200 frames of 1000 movers): merged
 -- boxes 79-81 instead of 91-93, box per tile 60-63 instead of 72-75 (3 runs each).
--- It hands the hash the box's values (Hash:lean_stop) and writes into the probe only what
--- the stops read there: see hash.lua's packed_scan for what that saved.
+-- It hands the hash the box's values (Hash:lean_stop) and writes into the probe only the
+-- outputs' start: see hash.lua's packed_scan for what that saved.
 local function lean_solids_phase(world, is_x, pos, cross, size, cross_size, delta, done, path)
   local probe = world._probe
   local forward = delta > 0
   local edge, cross_end = pos + size, cross + cross_size
   local reach = forward and pos + delta + size or pos + delta
-  probe.forward, probe.pos, probe.size, probe.edge, probe.reach = forward, pos, size, edge,
-    reach
-  probe.blocks_oneway = not is_x and forward
   probe.best, probe.touched = nil, 0
   local x, y, x1, y1 = swept_rect(world, is_x, pos, delta, edge, reach, cross, cross_end)
   if x <= x1 and y <= y1 then
-    world._solids:lean_stop(x, y, x1, y1, probe, is_x, forward, pos, edge, reach, cross,
-      cross_end)
+    world._solids:lean_stop(x, y, x1, y1, probe, is_x, forward, pos, edge, reach, size,
+      cross, cross_end)
   end
   local stop = probe.best
   if stop == nil then return pos + delta end
