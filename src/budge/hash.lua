@@ -1107,4 +1107,9 @@ function Hash:axis_stop(x0, y0, x1, y1, probe)
   if big[1] then scan_cell(big, #big, stamp, probe) end
 end
 
+-- The scans as functions of the module too, for the world's moves to call without the
+-- method lookup: a key missing from the hash's own table is a search of its hash part,
+-- then the metatable's, in every compiled move (LuaJIT: an HREF, not an HREFK).
+hash.axis_stop, hash.lean_stop = Hash.axis_stop, Hash.lean_stop
+
 return hash

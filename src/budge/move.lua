@@ -24,6 +24,7 @@ local sweep = require(here .. ".sweep")
 local layer = require(here .. ".layer")
 local solids = require(here .. ".solids")
 local hits = require(here .. ".hits")
+local hash = require(here .. ".hash")
 
 local overlaps = box.overlaps
 local before, first_contact, far_sides = sweep.before, sweep.first_contact, sweep.far_sides
@@ -33,6 +34,7 @@ local tile_face, tile_face_scan, tile_stop = layer.tile_face, layer.tile_face_sc
   layer.tile_stop
 local tile_line, list_line, line_pair, pair = layer.tile_line, layer.list_line,
   layer.line_pair, layer.pair
+local axis_stop, lean_stop = hash.axis_stop, hash.lean_stop
 local gather, clip_to_boxes, clip_to_bounds = solids.gather, solids.clip_to_boxes,
   solids.clip_to_bounds
 local gather_sensors, gather_all = solids.gather_sensors, solids.gather_all
@@ -103,7 +105,7 @@ local function hash_phase(world, probe)
   local x, y, x1, y1 = swept_rect(world, probe.is_x, probe.pos, probe.delta, probe.edge,
     probe.reach, probe.cross, probe.cross_end)
   if x <= x1 and y <= y1 then
-    world._solids:axis_stop(x, y, x1, y1, probe)
+    axis_stop(world._solids, x, y, x1, y1, probe)
   end
 end
 
@@ -295,7 +297,7 @@ local function lean_solids_phase(world, is_x, pos, cross, size, cross_size, delt
   probe.best, probe.touched = nil, 0
   local x, y, x1, y1 = swept_rect(world, is_x, pos, delta, edge, reach, cross, cross_end)
   if x <= x1 and y <= y1 then
-    world._solids:lean_stop(x, y, x1, y1, probe, is_x, forward, pos, edge, reach, size,
+    lean_stop(world._solids, x, y, x1, y1, probe, is_x, forward, pos, edge, reach, size,
       cross, cross_end)
   end
   local stop = probe.best
