@@ -693,13 +693,14 @@ end
 
 -- Where the first of `count` cells from (cx0, cy0) of a packed hash has its entries in the
 -- store, for the flat loops over cells (collect_packed, scan_packs) to start in it: its
--- first entry's start and its last's (1, -5 when there is no cell or it has no slot).
+-- first entry's start and its last's (last below first when the cell has no entry: 1, -5
+-- when there is no cell or it has no slot).
 -- LuaJIT shaping: worked out before the loop, the loop's first turn is an entry's, not
 -- the next cell's. A loop whose first turn leaves its trace runs the trace's start again
 -- from a side trace: once more per scan, where a scan of merged boxes runs 4.2 entries in
 -- 1.4 cells (`luajit bench/world.lua --way merged --count 100`). Machine instructions a
 -- move (`luajit bench/instructions.lua --way W --count 100 --frames 300`, 2026-12-07):
--- merged boxes 3212-3270 -> 3073-3124 (5 runs each), box per tile 3240-3254 in 2 runs of
+-- merged boxes 3212-3270 -> 3066-3133 (5 runs each, 3312 in a sixth), box per tile 3240-3254 in 2 runs of
 -- 3 (3594 in the third, another compile).
 local function first_run(self, cx0, cy0, count)
   if count > 0 then
@@ -906,8 +907,8 @@ end
 -- scan's order, (max(its first column, the scan's), max(its first row, the scan's)), so
 -- that the first meeting keeps its place, as the stamps do in scan_cell, at a constant
 -- cost (a search of the touch list would cost its length at every tie). The scan's first
--- column and row are scan_cx0 and scan_cy0, its hash's cell size `cell`; the box's values
--- (the probe's) from `forward` on.
+-- column and row are scan_cx0 and scan_cy0, its hash's cell size `cell`; the moving box's
+-- values (sweep.AxisProbe's fields of those names) from `forward` on.
 local function consider_packed(probe, pack, base, face, cx, cy, scan_cx0, scan_cy0, cell,
                                forward, pos, edge, reach, size, blocks_oneway)
   local flag = pack[base + 5]
@@ -988,8 +989,7 @@ local function scan_packs(self, probe, cx0, cy0, columns, count, face_slot, cros
   end
 end
 
--- scan_packs on Lua 5.1-5.4, with comparisons and the probe's values in locals: there
--- math.min is a call into C and each probe field read an instruction of its own. The
+-- scan_packs on Lua 5.1-5.4, with comparisons: there math.min is a call into C. The
 -- same entries pass: the faces from the box's start to the reach (the superset stop_at
 -- decides on), and the strict overlap across. `lua5.4 bench/world.lua --way boxes
 -- --count 1000 --frames 60`, 5 fresh runs each, interleaved, 2026-12-02: 3784 ns per move
@@ -1021,7 +1021,8 @@ local function scan_packs_compared(self, probe, cx0, cy0, columns, count, face_s
 end
 
 -- The probe over a packed hash's cells cx0..cx1, cy0..cy1 (scan_packs on LuaJIT,
--- scan_packs_compared on Lua 5.1-5.4), the box's values (as the probe holds them) given.
+-- scan_packs_compared on Lua 5.1-5.4), the moving box's values given (sweep.AxisProbe's
+-- fields of those names).
 -- Speed: the scans' values as arguments, not written into the probe for the scan to read
 -- back (with move.lua's lean_solids_phase, which hands them over the same way): `luajit
 -- bench/instructions.lua --way W --count 100 --frames 300` counted 3315-3360 machine
@@ -1052,8 +1053,9 @@ end
 ---Hash:axis_stop with the box's values given rather than read from the probe (see
 ---sweep.AxisProbe; blocks_oneway is `not is_x and forward`), for move.lua's
 ---lean_solids_phase: the probe holds only its outputs (best nil and touched 0 when it
----starts), unless the hash is small, has big records or is not packed: then the values
----are written into it and Hash:axis_stop runs. The same outcomes.
+---starts), unless the hash is small (SMALL records or fewer), has fewer records than the
+---rectangle has cells, has big records or is not packed: then the values are written into
+---it and Hash:axis_stop runs. The same outcomes.
 ---@param x0 number
 ---@param y0 number
 ---@param x1 number

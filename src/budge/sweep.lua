@@ -58,8 +58,9 @@ end
 
 ---One box moving along one axis, filled by move.lua and read by the axis scans of
 ---hash.lua (Hash:axis_stop) and layer.lua (layer.tile_face), with the best stop found so
----far. Owned by one world, so a filter that moves an actor of another world cannot
----disturb it.
+---far. (move.lua's lean_solids_phase hands the box's values to Hash:lean_stop instead and
+---writes only the outputs' start: after its phases the inputs hold an earlier phase's.)
+---Owned by one world, so a filter that moves an actor of another world cannot disturb it.
 ---LuaJIT shaping: these values travel in a table rather than as arguments, which keeps
 ---each compiled scan loop small: LuaJIT aborts a trace whose exits carry more live values
 ---than it can coalesce (commit 2e07fe1; aborts listed by make bench-jit). (The scan of a
@@ -72,6 +73,7 @@ end
 ---@field size number its extent on the axis
 ---@field edge number pos + size
 ---@field reach number where the leading edge gets to after the whole move
+---@field delta number the move along the axis (+ forward)
 ---@field cross number the box's low coordinate across the axis
 ---@field cross_end number and its high one
 ---@field blocks_oneway boolean oneway candidates stop this move (moving down)
@@ -99,8 +101,9 @@ end
 ---A new, empty axis probe.
 ---@return budge.AxisProbe
 function sweep.new_probe()
-  return {is_x = true, forward = true, pos = 0, size = 0, edge = 0, reach = 0, cross = 0,
-    cross_end = 0, blocks_oneway = false, before = 0, path = 1, touch = {}, touched = 0,
+  return {is_x = true, forward = true, pos = 0, size = 0, edge = 0, reach = 0, delta = 0,
+    cross = 0, cross_end = 0, blocks_oneway = false, before = 0, path = 1, touch = {},
+    touched = 0,
     touch_left = {}, touch_top = {}, touch_id = {}, payload = false,
     sources = 0, cols = {1, 1}, rows = {1, 1}}
 end
