@@ -694,18 +694,18 @@ end
 -- Where the first of `count` cells from (cx0, cy0) of a packed hash has its entries in the
 -- store, for the flat loops over cells (collect_packed, scan_packs) to start in it: its
 -- first entry's start and its last's (last below first when the cell has no entry: 1, -5
--- when there is no cell or it has no slot).
+-- when there is no cell or it has no slot). The hash's _span, _gx0, _gy0 and _gw given,
+-- as the loops hold them.
 -- LuaJIT shaping: worked out before the loop, the loop's first turn is an entry's, not
 -- the next cell's. A loop whose first turn leaves its trace runs the trace's start again
 -- from a side trace: once more per scan, where a scan of merged boxes runs 4.2 entries in
 -- 1.4 cells (`luajit bench/world.lua --way merged --count 100`). Machine instructions a
 -- move (`luajit bench/instructions.lua --way W --count 100 --frames 300`, 2026-12-07):
--- merged boxes 3212-3270 -> 3066-3133 (5 runs each, 3312 in a sixth), box per tile 3240-3254 in 2 runs of
--- 3 (3594 in the third, another compile).
-local function first_run(self, cx0, cy0, count)
+-- merged boxes 3212-3270 -> 3066-3133 (5 runs each, 3312 in a sixth), box per tile
+-- 3240-3254 in 2 runs of 3 (3594 in the third, another compile).
+local function first_run(span, gx0, gy0, gw, cx0, cy0, count)
   if count > 0 then
-    local span = self._span
-    local slot = (cy0 - self._gy0) * self._gw + (cx0 - self._gx0) + 1
+    local slot = (cy0 - gy0) * gw + (cx0 - gx0) + 1
     local first = span[2 * slot - 1]
     if first then return first, span[2 * slot] end
   end
@@ -731,7 +731,7 @@ local function collect_packed(self, cx0, cy0, columns, count, x0, y0, x1, y1, ou
   local store, span = self._store, self._span
   local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local k, cx, cy = 0, cx0, cy0
-  local base, last = first_run(self, cx0, cy0, count)
+  local base, last = first_run(span, gx0, gy0, gw, cx0, cy0, count)
   while true do
     if base > last then -- the next cell
       k = k + 1
@@ -965,7 +965,7 @@ local function scan_packs(self, probe, cx0, cy0, columns, count, face_slot, cros
   local store, span, cell = self._store, self._span, self.cell_size
   local gx0, gy0, gw = self._gx0, self._gy0, self._gw
   local k, cx, cy = 0, cx0, cy0
-  local base, last = first_run(self, cx0, cy0, count)
+  local base, last = first_run(span, gx0, gy0, gw, cx0, cy0, count)
   while true do
     if base > last then -- the next cell
       k = k + 1
@@ -1081,7 +1081,7 @@ function Hash:lean_stop(x0, y0, x1, y1, probe, is_x, forward, pos, edge, reach, 
       reach
     probe.size, probe.cross, probe.cross_end = size, cross, cross_end
     probe.blocks_oneway = not is_x and forward
-    return self:axis_stop(x0, y0, x1, y1, probe)
+    return Hash.axis_stop(self, x0, y0, x1, y1, probe)
   end
   packed_scan(self, probe, is_x, forward, pos, edge, reach, size, not is_x and forward, cross,
     cross_end, cx0, cy0, cx1, cy1)
