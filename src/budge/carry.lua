@@ -227,6 +227,19 @@ function carry.move_solid(world, record, dx, dy)
   if not record.removed then solids.hash(world, record) end
 end
 
+-- LuaJIT shaping: the rest of a solid's move (its riders, unhash and hash, the crush
+-- check) is left to the interpreter too; what it calls (actors.near's loop, the hash's
+-- loops) still compiles its own traces. Compiled, each exit of those loops was a side
+-- trace carrying the rest of the move up to the next loop that had a trace (3-4 KB each:
+-- one per call of actors.near and per path). With this, 12 runs each, interleaved,
+-- 2026-12-08: the example game's play-through (`luajit bench/game.lua --frames 5000
+-- --way default`) needed 238 KB of machine code instead of 277 (median), make
+-- bench-jit's platformer 226 instead of 263. Cost: with few actors about it, a
+-- move_solid's own steps show: `luajit bench/platforms.lua --actors 20` (100 solids)
+-- took 103-120 us a frame instead of 80-93 or 122-180 (compiled, it ran at two speeds
+-- from run to run); with 1000 actors the same, 1.90 ms a frame (9 runs each).
+if jit and jit.off then jit.off(carry.move_solid) end
+
 ---What an error raised by a filter during carry.move_solid leaves: the solid where it
 ---was going (its record agrees), the actors it had pushed or carried where they got to,
 ---no actor reported crushed. An actor it had not reached yet may now overlap it, as if

@@ -401,6 +401,23 @@ function solids.gather_all(world, x, y, x1, y1, with_actors)
   set.n = n
   return set
 end
+-- LuaJIT shaping: left to the interpreter, as the filtered phases that call it are
+-- (move.lua's jit.off); the loops it calls (Hash:collect_between, append_records,
+-- gather_layer, actors.rehash) still compile traces of their own. Called from interpreted
+-- code, it compiled as one trace from its start (8.5 KB of machine code, 589 IR
+-- instructions), and each exit of the loops inlined in it was a side trace carrying the
+-- rest of it (4-7 KB each). The example game's play-through (`luajit bench/game.lua
+-- --frames 5000 --way default`, 12 runs each, interleaved, 2026-12-08) needed 238 KB of
+-- machine code instead of 275 (median; the largest run 296 instead of 451, 40 KB short of
+-- a flush). Cost: its own steps and the calls out of it run in the interpreter, about
+-- 1900 machine instructions a phase: the world bench's blocking way (every move
+-- filtered) ran 30475-30611 instructions a move instead of 26553-26883 (`luajit
+-- bench/instructions.lua --way blocking --count 100 --frames 100`) and took 4357 ns
+-- instead of 3652 at 1000 actors (5 runs each, interleaved).
+do
+  local jit = rawget(_G, "jit")
+  if jit and jit.off then jit.off(solids.gather_all) end
+end
 
 ---Fills the world's cross set with the sensors whose boxes touch the rectangle from (x0,
 ---y0) to (x1, y1), for an actor with no filter (every sensor is crossed). Returns the
