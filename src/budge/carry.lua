@@ -232,8 +232,9 @@ end
 -- loops) still compiles its own traces. Compiled, each exit of those loops was a side
 -- trace carrying the rest of the move up to the next loop that had a trace (3-4 KB each:
 -- one per call of actors.near and per path). With this, 12 runs each, interleaved,
--- 2026-12-08: the example game's play-through (`luajit bench/game.lua --frames 5000
--- --way default`) needed 238 KB of machine code instead of 277 (median), make
+-- 2026-12-08 (solids.gather_all and Hash:moved's re-registration in the interpreter in
+-- both): the example game's play-through (`luajit bench/game.lua --frames 5000 --way
+-- default`) needed 238 KB of machine code instead of 277 (median), make
 -- bench-jit's platformer 226 instead of 263. Cost: with few actors about it, a
 -- move_solid's own steps show: `luajit bench/platforms.lua --actors 20` (100 solids)
 -- took 103-120 us a frame instead of 80-93 or 122-180 (compiled, it ran at two speeds

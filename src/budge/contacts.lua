@@ -415,11 +415,15 @@ local function restart_moved(moved)
   end
 end
 
--- from[1..n] into to[1..n], clearing `to` after them up to `old` (its length once the n
--- are in, if not given).
+-- from[1..n] into to[1..n], clearing `to` after them up to `old` (its length before).
 local function copy_list(to, from, n, old)
   for i = 1, n do to[i] = from[i] end
-  for i = n + 1, old or #to do to[i] = nil end
+  for i = n + 1, old do to[i] = nil end
+end
+
+-- Empties a list, from its end.
+local function empty(list)
+  for i = #list, 1, -1 do list[i] = nil end
 end
 
 ---Finds the frame's contacts into the world's pool, sorted by t, then by the order item
@@ -443,7 +447,7 @@ function contacts.find(world)
   if world._sensor_count - n_moved <= SWEPT_SENSORS * n_actors then
     n_sensors, old_sensors = refresh(sensors, world._sensor_list, stamp)
   else
-    for i = #sensors, 1, -1 do sensors[i] = nil end
+    empty(sensors)
     sensors, n_sensors, old_sensors = moved, n_moved, 0
   end
   swept(world, order, n_actors, stats)
@@ -479,7 +483,7 @@ function contacts.finish(world, out)
   world._moved_dead = 0
   -- (sorted here, in the pool's own range: table.sort sees exactly the n records)
   local sorted = world._contact_sorted
-  copy_list(sorted, pool, n)
+  copy_list(sorted, pool, n, #sorted) -- (a list with no holes: its length before is the same)
   sort(sorted, contact_before)
   copy_list(out, sorted, n, #out)
   return out, n
@@ -487,10 +491,11 @@ end
 
 -- LuaJIT shaping: contacts.find and contacts.finish, once a call each, are left to the
 -- interpreter; their loops are functions of their own (list_filtered, release, restart,
--- restart_moved, copy_list, and refresh, swept, sort_order, sweep, meet_still before),
+-- restart_moved, copy_list, empty, and refresh, swept, sort_order, sweep, meet_still),
 -- which still compile. Compiled, each exit of a loop in them was a side trace carrying
 -- the rest of the call. The example game's play-through (`luajit bench/game.lua --frames
--- 5000 --way default`, 12 runs each, interleaved, 2026-12-08) needed 182 KB of machine
+-- 5000 --way default`, 12 runs each, interleaved, 2026-12-08; move_solid, gather_all and
+-- Hash:moved's re-registration in the interpreter in both) needed 182 KB of machine
 -- code instead of 245 (median; its largest run 220 instead of 285), at 67 us a frame
 -- against 69. bench/contacts.lua's contacts (1100 actors and 200 sensors, `--budget
 -- large`, 7 runs each): 481 ns per actor against 511; bench/crowds.lua's scenes the same

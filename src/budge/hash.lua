@@ -463,7 +463,8 @@ end
 -- loops unrolled, up to insert's loop: 3.0-3.5 KB of machine code each, about eight a run
 -- of `luajit bench/game.lua` (from `jit.attach`'s trace events). With it interpreted the
 -- play-through needed 238 KB instead of 251 (median of 12 runs, each its own process,
--- interleaved, 2026-12-08); bench/contacts.lua's moves (1000 walkers re-registered
+-- interleaved, 2026-12-08; carry.move_solid and solids.gather_all in the interpreter in
+-- both); bench/contacts.lua's moves (1000 walkers re-registered
 -- before each bullet's filtered move, `--budget large`) took 1329 ns per actor instead of
 -- 1261 (7 runs: within the machine's noise).
 local function reregister(self, record, x, y, width, height)

@@ -302,11 +302,19 @@ function solids.gather(world, x, y, x1, y1)
   return set, cross
 end
 
--- Appends the records found[1..count] to the set as they are (no filter asked), each
--- with its record; skips removed ones, `self`, and those whose box neither overlaps nor
--- touches the closed rectangle (x0, y0)-(x1, y1): tested here on LuaJIT; on Lua 5.x
--- Hash:collect_touching found only those (see gather_all). Returns the set's new count.
-local function append_records(found, count, set, n, self, x0, y0, x1, y1)
+-- Appends to the set the records of `hash` that touch the closed rectangle (x0, y0)-(x1,
+-- y1), as they are (no filter asked), each with its record, skipping removed ones and
+-- `self`; returns the set's new count. On LuaJIT the hash's cells give every record in
+-- them and the test is made here; on Lua 5.x Hash:collect_touching finds only those (see
+-- gather_all). One call for each hash gather_all reads, the collection and the pass in
+-- one: on LuaJIT gather_all runs in the interpreter, and each call out of it into a
+-- trace costs a trace exit on the way back (the world bench's blocking way, `luajit
+-- bench/instructions.lua --way blocking --count 100 --frames 100`: 29861-30482
+-- instructions a move with the two as calls of their own, 27235-27316 as one).
+local function collect_into(hash, found, set, n, self, x0, y0, x1, y1)
+  local count
+  if BRANCH_FREE then count = hash:collect_between(x0, y0, x1, y1, found, 0)
+  else count = hash:collect_touching(x0, y0, x1, y1, found, 0) end
   local xs, ys, ws, hs, oneway, other = set.x, set.y, set.w, set.h, set.oneway, set.other
   local cols, rows, ids, records = set.col, set.row, set.id, set.record
   for i = 1, count do
@@ -360,7 +368,7 @@ function solids.gather_all(world, x, y, x1, y1, with_actors)
   -- 1.54 on this machine, the counts do not). On LuaJIT, where the filtered
   -- phases are left to the interpreter on purpose (move.lua's jit.off) and each loop they
   -- call is a trace of its own, that ran 22312 instructions instead of 21256 (median of 3)
-  -- and 1.07 of the time (9 runs): there the test stays in append_records, a pass over
+  -- and 1.07 of the time (9 runs): there the test stays in collect_into, a pass over
   -- what Hash:collect found. Reading each cell's packed boxes instead (stamp-free, in
   -- scan_packs's shape on LuaJIT) saved 5-6% on Lua 5.4 but ran 13-50% more instructions
   -- on LuaJIT: not taken.
@@ -368,10 +376,7 @@ function solids.gather_all(world, x, y, x1, y1, with_actors)
   if bx <= bx1 and by <= by1 and world._solid_count > 0 then
     -- (clipped to the solids' bounds, which hold every solid's box: a box touches the
     -- clipped rectangle if and only if it touches the path's)
-    local count
-    if BRANCH_FREE then count = world._solids:collect_between(bx, by, bx1, by1, found, 0)
-    else count = world._solids:collect_touching(bx, by, bx1, by1, found, 0) end
-    n = append_records(found, count, set, n, nil, bx, by, bx1, by1)
+    n = collect_into(world._solids, found, set, n, nil, bx, by, bx1, by1)
   end
   set.n = n
   local layers, records = world._layers, world._records
@@ -386,34 +391,31 @@ function solids.gather_all(world, x, y, x1, y1, with_actors)
     end
   end
   if world._sensor_count > 0 and world._sensors:occupied_between(x, y, x1, y1) then
-    local count
-    if BRANCH_FREE then count = world._sensors:collect_between(x, y, x1, y1, found, 0)
-    else count = world._sensors:collect_touching(x, y, x1, y1, found, 0) end
-    n = append_records(found, count, set, n, nil, x, y, x1, y1)
+    n = collect_into(world._sensors, found, set, n, nil, x, y, x1, y1)
   end
   if with_actors and #world._actor_list > 1 then
     actors.rehash(world)
-    local count
-    if BRANCH_FREE then count = world._actors:collect_between(x, y, x1, y1, found, 0)
-    else count = world._actors:collect_touching(x, y, x1, y1, found, 0) end
-    n = append_records(found, count, set, n, world._records[world._probe.actor], x, y, x1, y1)
+    n = collect_into(world._actors, found, set, n, world._records[world._probe.actor], x, y,
+      x1, y1)
   end
   set.n = n
   return set
 end
+
 -- LuaJIT shaping: left to the interpreter, as the filtered phases that call it are
--- (move.lua's jit.off); the loops it calls (Hash:collect_between, append_records,
+-- (move.lua's jit.off); the loops it calls (Hash:collect_between, collect_into,
 -- gather_layer, actors.rehash) still compile traces of their own. Called from interpreted
 -- code, it compiled as one trace from its start (8.5 KB of machine code, 589 IR
 -- instructions), and each exit of the loops inlined in it was a side trace carrying the
 -- rest of it (4-7 KB each). The example game's play-through (`luajit bench/game.lua
--- --frames 5000 --way default`, 12 runs each, interleaved, 2026-12-08) needed 238 KB of
--- machine code instead of 275 (median; the largest run 296 instead of 451, 40 KB short of
--- a flush). Cost: its own steps and the calls out of it run in the interpreter, about
--- 1900 machine instructions a phase: the world bench's blocking way (every move
--- filtered) ran 30475-30611 instructions a move instead of 26553-26883 (`luajit
--- bench/instructions.lua --way blocking --count 100 --frames 100`) and took 4357 ns
--- instead of 3652 at 1000 actors (5 runs each, interleaved).
+-- --frames 5000 --way default`, 12 runs each, interleaved, 2026-12-08; carry.move_solid
+-- and Hash:moved's re-registration in the interpreter in both) needed 238 KB of machine
+-- code instead of 275 (median; the largest run 296 instead of 451, where LuaJIT flushes
+-- from about 490). Cost: its own steps and its calls out into traces (each a trace exit
+-- on the way back) run in the interpreter: the world bench's blocking way (every move
+-- filtered) ran 27214-28212 machine instructions a move instead of 26553-26883 (`luajit
+-- bench/instructions.lua --way blocking --count 100 --frames 100`) and took 3723 ns
+-- instead of 3445 at 1000 actors (5 runs each, interleaved; 4436 before collect_into).
 do
   local jit = rawget(_G, "jit")
   if jit and jit.off then jit.off(solids.gather_all) end
