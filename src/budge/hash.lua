@@ -464,9 +464,9 @@ end
 -- of `luajit bench/game.lua` (from `jit.attach`'s trace events). With it interpreted the
 -- play-through needed 238 KB instead of 251 (median of 12 runs, each its own process,
 -- interleaved, 2026-12-08; carry.move_solid and solids.gather_all in the interpreter in
--- both); bench/contacts.lua's moves (1000 walkers re-registered
--- before each bullet's filtered move, `--budget large`) took 1329 ns per actor instead of
--- 1261 (7 runs: within the machine's noise).
+-- both); bench/contacts.lua's moves (1000 walkers re-registered before each bullet's
+-- filtered move, `--budget large`) took 1329 ns per actor instead of 1261 (7 runs: within
+-- the machine's noise).
 local function reregister(self, record, x, y, width, height)
   self:remove(record)
   self:insert(record, x, y, width, height)

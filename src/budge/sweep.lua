@@ -103,8 +103,7 @@ end
 function sweep.new_probe()
   return {is_x = true, forward = true, pos = 0, size = 0, edge = 0, reach = 0, delta = 0,
     cross = 0, cross_end = 0, blocks_oneway = false, before = 0, path = 1, touch = {},
-    touched = 0,
-    touch_left = {}, touch_top = {}, touch_id = {}, payload = false,
+    touched = 0, touch_left = {}, touch_top = {}, touch_id = {}, payload = false,
     sources = 0, cols = {1, 1}, rows = {1, 1}}
 end
 
